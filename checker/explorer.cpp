@@ -1,0 +1,213 @@
+#include "checker/explorer.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <thread>
+
+#include "checker/progress.hpp"
+
+namespace checker {
+
+const char* describe(StopReason reason) {
+  switch (reason) {
+  case StopReason::finished:
+    return "finished";
+  case StopReason::found:
+    return "found";
+  case StopReason::state_limit:
+    return "state limit reached";
+  case StopReason::time_limit:
+    return "time limit reached";
+  default:
+    return "memory limit reached";
+  }
+}
+
+namespace {
+
+struct Candidate {
+  std::uint64_t hash;
+  StateId from;
+  std::uint8_t duration;
+  bool target;
+};
+
+// What one thread produces while expanding its chunk of the frontier; reused each level.
+struct Worker {
+  std::vector<Word> states;
+  std::vector<Candidate> candidates;
+  std::vector<Edge> edges;
+  std::vector<StateId> stuck;
+  std::vector<Word> scratch;
+  std::uint64_t edge_count = 0;
+  std::uint64_t expanded = 0;
+  std::exception_ptr error;
+
+  void clear() {
+    states.clear();
+    candidates.clear();
+    edges.clear();
+    stuck.clear();
+    edge_count = 0;
+    expanded = 0;
+    error = nullptr;
+  }
+};
+
+struct StopEnumeration {};
+
+constexpr std::size_t parallel_threshold = 4096;
+
+std::uint32_t timed_bit(std::uint32_t duration) { return duration ? Edge::timed_bit : 0u; }
+
+} // namespace
+
+Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::StartSet& start,
+                    const ExploreOptions& options, const ExploreHooks& hooks) {
+  const std::uint32_t words = generator.words();
+  const Limits& limits = options.limits;
+  Exploration ex(words);
+  ex.threads = options.threads == 0 ? 1 : options.threads;
+  Progress progress(options.progress, options.task.empty() ? "exploring" : options.task);
+  bool stopped = false;
+  auto stop = [&](StopReason reason) {
+    ex.stop = reason;
+    stopped = true;
+  };
+  auto over_state_limit = [&] { return limits.max_states && ex.store.size() > limits.max_states; };
+  auto check_time_and_memory = [&] {
+    if (limits.max_seconds > 0 && progress.elapsed() > limits.max_seconds)
+      stop(StopReason::time_limit);
+    else if (limits.max_memory_bytes && ex.memory_bytes() > limits.max_memory_bytes)
+      stop(StopReason::memory_limit);
+  };
+
+  // Level 0: the start states.
+  std::vector<StateId> frontier, next;
+  std::vector<Word> buffer(words + 1, 0);
+  try {
+    start.enumerate(buffer.data(), 0, [&] {
+      const auto [id, fresh] = ex.store.insert(buffer.data(), hash_state(buffer.data(), words));
+      if (!fresh)
+        return;
+      ex.parent.push_back(no_parent);
+      ++ex.start_states;
+      frontier.push_back(id);
+      if (hooks.target && hooks.target(buffer.data())) {
+        ex.found = id;
+        stop(StopReason::found);
+      } else if (over_state_limit()) {
+        stop(StopReason::state_limit);
+      } else if ((ex.start_states & 0xffff) == 0) {
+        check_time_and_memory();
+      }
+      if (stopped)
+        throw StopEnumeration{};
+      progress.update(ex.store.size(), frontier.size(), 0);
+    });
+  } catch (const StopEnumeration&) {
+  }
+
+  std::vector<Worker> workers(ex.threads);
+  for (auto& w : workers)
+    w.scratch.assign(words + 1, 0);
+  std::atomic<bool> out_of_time{false};
+
+  auto expand_chunk = [&](Worker& w, std::size_t begin, std::size_t end) {
+    try {
+      for (std::size_t i = begin; i < end; ++i) {
+        if (((i - begin) & 1023) == 1023 && limits.max_seconds > 0) {
+          if (out_of_time.load(std::memory_order_relaxed))
+            return;
+          if (progress.elapsed() > limits.max_seconds) {
+            out_of_time = true;
+            return;
+          }
+        }
+        const StateId id = frontier[i];
+        const Word* state = ex.store.state(id);
+        if (hooks.expand && !hooks.expand(state))
+          continue;
+        ++w.expanded;
+        const std::size_t n = generator.successors(
+            state, w.scratch.data(), [&](const Word* succ, const tioa::StepLabel& label) {
+              const std::uint32_t duration = generator.duration(label);
+              const std::uint64_t h = hash_state(succ, words);
+              if (const auto known = ex.store.find(succ, h)) {
+                if (hooks.record_edges)
+                  w.edges.push_back({id, *known | timed_bit(duration)});
+                return;
+              }
+              w.states.insert(w.states.end(), succ, succ + words);
+              w.candidates.push_back({h, id, static_cast<std::uint8_t>(duration),
+                                      hooks.target && hooks.target(succ)});
+            });
+        w.edge_count += n;
+        if (n == 0)
+          w.stuck.push_back(id);
+      }
+    } catch (...) {
+      w.error = std::current_exception();
+    }
+  };
+
+  while (!frontier.empty() && !stopped) {
+    // Phase 1: expand.
+    const std::size_t n = frontier.size();
+    const std::size_t used = n < parallel_threshold ? 1 : workers.size();
+    for (std::size_t t = 0; t < used; ++t)
+      workers[t].clear();
+    std::vector<std::thread> threads;
+    for (std::size_t t = 1; t < used; ++t)
+      threads.emplace_back(expand_chunk, std::ref(workers[t]), n * t / used, n * (t + 1) / used);
+    expand_chunk(workers[0], 0, n / used);
+    for (auto& th : threads)
+      th.join();
+    for (std::size_t t = 0; t < used; ++t)
+      if (workers[t].error)
+        std::rethrow_exception(workers[t].error);
+
+    // Phase 2: merge, in frontier order.
+    next.clear();
+    for (std::size_t t = 0; t < used && !stopped; ++t) {
+      Worker& w = workers[t];
+      ex.edges += w.edge_count;
+      ex.expanded += w.expanded;
+      ex.stuck.insert(ex.stuck.end(), w.stuck.begin(), w.stuck.end());
+      if (hooks.record_edges)
+        ex.edge_list.insert(ex.edge_list.end(), w.edges.begin(), w.edges.end());
+      for (std::size_t c = 0; c < w.candidates.size(); ++c) {
+        const Candidate& cand = w.candidates[c];
+        const Word* succ = w.states.data() + c * words;
+        const auto [id, fresh] = ex.store.insert(succ, cand.hash);
+        if (hooks.record_edges)
+          ex.edge_list.push_back({cand.from, id | timed_bit(cand.duration)});
+        if (!fresh)
+          continue;
+        ex.parent.push_back(cand.from);
+        next.push_back(id);
+        if (cand.target) {
+          ex.found = id;
+          stop(StopReason::found);
+          break;
+        }
+        if (over_state_limit()) {
+          stop(StopReason::state_limit);
+          break;
+        }
+      }
+    }
+    if (out_of_time)
+      stop(StopReason::time_limit);
+    if (!stopped)
+      check_time_and_memory();
+    frontier.swap(next);
+    ++ex.depth;
+    progress.update(ex.store.size(), frontier.size(), ex.depth);
+  }
+  ex.seconds = progress.elapsed();
+  return ex;
+}
+
+} // namespace checker

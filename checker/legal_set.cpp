@@ -1,0 +1,76 @@
+#include <vector>
+
+#include "checker/checks.hpp"
+#include "checker/progress.hpp"
+#include "tioa/start_set.hpp"
+
+namespace checker {
+
+namespace {
+struct StopEnumeration {};
+} // namespace
+
+PropertyResult check_legal_set(const Automaton& system, const StatePredicate& legal,
+                               const ExploreOptions& options) {
+  const tioa::SuccessorGenerator generator(system);
+  const std::uint32_t words = generator.words();
+  const tioa::StartSet members =
+      tioa::StartSet::satisfying(system.layout(), legal, "the legal set");
+  Progress progress(options.progress, options.task.empty() ? "closure" : options.task);
+
+  PropertyResult r;
+  r.kind = "legal-set";
+  r.time_unit = generator.timed() ? "quanta" : "steps";
+  std::vector<Word> state(words + 1, 0), scratch(words + 1, 0);
+  std::optional<std::vector<Word>> bad_from, bad_to;
+  std::string limit;
+  try {
+    members.enumerate(state.data(), 0, [&] {
+      ++r.states;
+      r.edges += generator.successors(state.data(), scratch.data(),
+                                      [&](const Word* succ, const tioa::StepLabel&) {
+                                        if (!bad_from && !legal(tioa::State(succ, 0))) {
+                                          bad_from.emplace(state.begin(), state.begin() + words);
+                                          bad_to.emplace(succ, succ + words);
+                                        }
+                                      });
+      if (bad_from)
+        throw StopEnumeration{};
+      if ((r.states & 0xfff) == 0) {
+        progress.update(r.states, 0, 0);
+        if (options.limits.max_seconds > 0 && progress.elapsed() > options.limits.max_seconds)
+          limit = "time limit reached";
+      }
+      if (options.limits.max_states && r.states >= options.limits.max_states)
+        limit = "state limit reached";
+      if (!limit.empty())
+        throw StopEnumeration{};
+    });
+  } catch (const StopEnumeration&) {
+  }
+  r.seconds = progress.elapsed();
+  if (bad_from) {
+    r.verdict = Verdict::violated;
+    Trace trace;
+    trace.steps.push_back({"", 0, *bad_from});
+    extend(generator, trace, bad_to->data());
+    r.trace = std::move(trace);
+    r.trace_role = "counterexample";
+    r.trace_kind = "closure-step";
+    r.message = "a step leaves the legal set from one of its states";
+  } else if (!limit.empty()) {
+    r.verdict = Verdict::incomplete;
+    r.message = limit + " after " + std::to_string(r.states) +
+                " states of the legal set, all closed so far";
+  } else if (r.states == 0) {
+    r.verdict = Verdict::violated;
+    r.message = "the legal set is empty (seed 000 §3.1 requires a nonempty set)";
+  } else {
+    r.verdict = Verdict::holds;
+    r.message = "closed: every step from each of its " + std::to_string(r.states) +
+                " states stays in it";
+  }
+  return r;
+}
+
+} // namespace checker

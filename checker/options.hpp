@@ -1,0 +1,27 @@
+#pragma once
+// How far and how a check may go. Zero means "no limit". A limit that is hit ends the
+// run with the verdict incomplete, never holds.
+
+#include <cstdint>
+#include <string>
+
+namespace checker {
+
+struct Limits {
+  std::uint64_t max_states = 0;
+  double max_seconds = 0;
+  std::uint64_t max_memory_bytes = 0;
+};
+
+struct ExploreOptions {
+  Limits limits;
+  unsigned threads = 1;
+  bool progress = false; // a progress line on stderr (only when it is a terminal)
+  std::string task;      // shown in the progress line
+};
+
+enum class StopReason { finished, found, state_limit, time_limit, memory_limit };
+
+const char* describe(StopReason reason);
+
+} // namespace checker

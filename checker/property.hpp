@@ -1,0 +1,28 @@
+#pragma once
+// A named property of a model, as the command line and the suite see it, and the one
+// function that runs it with the right check.
+
+#include <string>
+
+#include "checker/checks.hpp"
+
+namespace checker {
+
+enum class PropertyKind { invariant, legal_set, stabilisation, transitivity, deadlock };
+
+const char* to_string(PropertyKind kind);
+
+struct Property {
+  std::string name;
+  std::string description;
+  PropertyKind kind = PropertyKind::invariant;
+  StatePredicate predicate; // the invariant, or the legal set L (L2 for transitivity)
+  std::string predicate_name;
+  StatePredicate first;     // transitivity: the intermediate legal set L1
+  std::string first_name;
+};
+
+PropertyResult run_property(const Automaton& system, const Property& property,
+                            const ExploreOptions& options);
+
+} // namespace checker

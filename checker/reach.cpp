@@ -1,0 +1,24 @@
+#include "checker/reach.hpp"
+
+#include "checker/explorer.hpp"
+#include "tioa/errors.hpp"
+#include "tioa/operators.hpp"
+
+namespace checker {
+
+tioa::Automaton R(const tioa::Automaton& a, const ExploreOptions& options) {
+  const tioa::SuccessorGenerator generator(a);
+  const Exploration ex = explore(generator, a.start(), options);
+  if (!ex.complete())
+    throw tioa::ModelError("R(" + a.name() + "): the reachable states could not all be explored (" +
+                           describe(ex.stop) + ")");
+  std::vector<Word> states;
+  states.reserve(ex.store.size() * generator.words());
+  for (StateId id = 0; id < ex.store.size(); ++id)
+    states.insert(states.end(), ex.store.state(id), ex.store.state(id) + generator.words());
+  return tioa::Start(a, tioa::StartSet::listed(a.layout().bits(), generator.words(),
+                                               std::move(states),
+                                               "the reachable states of " + a.name() + " (R)"));
+}
+
+} // namespace checker

@@ -1,0 +1,22 @@
+#include "checker/result.hpp"
+
+namespace checker {
+
+const char* to_string(Verdict verdict) {
+  switch (verdict) {
+  case Verdict::holds:
+    return "holds";
+  case Verdict::violated:
+    return "violated";
+  default:
+    return "incomplete";
+  }
+}
+
+void mark_incomplete(PropertyResult& result, const Exploration& ex, const std::string& covered) {
+  result.verdict = Verdict::incomplete;
+  result.message = std::string(describe(ex.stop)) + " after " + std::to_string(ex.store.size()) +
+                   " states to depth " + std::to_string(ex.depth) + ": " + covered;
+}
+
+} // namespace checker

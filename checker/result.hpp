@@ -1,0 +1,45 @@
+#pragma once
+// The outcome of one property check: a verdict, the figures the run measured, and a
+// trace (a counterexample, or a witness of the worst case).
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "checker/trace.hpp"
+
+namespace checker {
+
+enum class Verdict { holds, violated, incomplete };
+
+const char* to_string(Verdict verdict);
+
+struct PropertyResult {
+  std::string name;
+  std::string kind; // invariant, legal-set, stabilisation, transitivity, deadlock
+  std::string description;
+  Verdict verdict = Verdict::incomplete;
+  std::string message; // one line: why this verdict
+
+  std::uint64_t states = 0;
+  std::uint64_t edges = 0;
+  std::uint32_t depth = 0;
+  double seconds = 0;
+  unsigned threads = 1;
+
+  std::string time_unit; // "steps" or "quanta"
+  std::optional<std::uint64_t> worst_time;
+  std::optional<std::uint64_t> last_time_outside;
+
+  std::optional<Trace> trace;
+  std::string trace_role; // "counterexample" or "witness"
+  std::string trace_kind; // invariant, lasso, deadlock, time-lock, closure-step, worst-case
+  std::vector<std::string> notes;
+  std::vector<std::pair<std::string, std::string>> figures; // further named numbers
+};
+
+// Sets verdict and message for a run that stopped on a limit.
+void mark_incomplete(PropertyResult& result, const Exploration& ex, const std::string& covered);
+
+} // namespace checker

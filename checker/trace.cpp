@@ -1,0 +1,89 @@
+#include "checker/trace.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace checker {
+
+namespace {
+
+std::vector<Word> copy_state(const Word* state, std::uint32_t words) {
+  return std::vector<Word>(state, state + words);
+}
+
+// The first step from `from` that reaches `to`, if any.
+std::optional<std::pair<std::string, std::uint32_t>>
+step_between(const tioa::SuccessorGenerator& generator, const Word* from, const Word* to) {
+  const std::uint32_t words = generator.words();
+  std::vector<Word> scratch(words + 1, 0);
+  std::optional<std::pair<std::string, std::uint32_t>> found;
+  generator.successors(from, scratch.data(), [&](const Word* succ, const tioa::StepLabel& label) {
+    if (!found && std::memcmp(succ, to, words * sizeof(Word)) == 0)
+      found.emplace(generator.describe(label), generator.duration(label));
+  });
+  return found;
+}
+
+} // namespace
+
+Trace trace_to(const tioa::SuccessorGenerator& generator, const Exploration& ex, StateId id) {
+  std::vector<StateId> path;
+  for (StateId at = id; at != no_parent; at = ex.parent[at])
+    path.push_back(at);
+  std::reverse(path.begin(), path.end());
+  Trace trace;
+  trace.steps.push_back({"", 0, copy_state(ex.store.state(path.front()), generator.words())});
+  for (std::size_t i = 1; i < path.size(); ++i)
+    extend(generator, trace, ex.store.state(path[i]));
+  return trace;
+}
+
+bool extend(const tioa::SuccessorGenerator& generator, Trace& trace, const Word* next) {
+  const TraceStep& last = trace.steps.back();
+  const auto step = step_between(generator, last.state.data(), next);
+  if (!step)
+    return false;
+  trace.steps.push_back(
+      {step->first, last.time + step->second, copy_state(next, generator.words())});
+  return true;
+}
+
+bool replay(const tioa::SuccessorGenerator& generator, const Trace& trace, std::string* why) {
+  auto fail = [&](const std::string& message) {
+    if (why)
+      *why = message;
+    return false;
+  };
+  if (trace.steps.empty())
+    return fail("empty trace");
+  for (std::size_t i = 1; i < trace.steps.size(); ++i) {
+    const TraceStep& prev = trace.steps[i - 1];
+    const TraceStep& step = trace.steps[i];
+    const auto found = step_between(generator, prev.state.data(), step.state.data());
+    if (!found)
+      return fail("step " + std::to_string(i) + " (" + step.action + ") is not a transition");
+    if (found->first != step.action)
+      return fail("step " + std::to_string(i) + " is labelled " + step.action + " but the model takes " +
+                  found->first);
+    if (step.time != prev.time + found->second)
+      return fail("step " + std::to_string(i) + " has the wrong time");
+  }
+  if (trace.loop_start) {
+    if (*trace.loop_start >= trace.steps.size() - 1)
+      return fail("the loop starts at or after the last state");
+    if (trace.steps[*trace.loop_start].state != trace.steps.back().state)
+      return fail("the lasso does not close: its last state differs from its loop start");
+  }
+  return true;
+}
+
+std::vector<std::pair<std::string, std::string>> render_state(const tioa::StateLayout& layout,
+                                                              const Word* state) {
+  std::vector<std::pair<std::string, std::string>> out;
+  const tioa::State view(state, 0);
+  for (const auto& v : layout.variables())
+    out.emplace_back(v.name, v.render_code(view.code(v.slot())));
+  return out;
+}
+
+} // namespace checker

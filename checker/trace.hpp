@@ -1,0 +1,44 @@
+#pragma once
+// Traces: a start state, then for each step the action taken, the time elapsed so far
+// and the state reached. A lasso also says where its cycle begins: the last state equals
+// the state at `loop_start`. Every trace the checker prints can be replayed step by step
+// against the model (replay()).
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "checker/explorer.hpp"
+
+namespace checker {
+
+struct TraceStep {
+  std::string action;     // empty for the first state
+  std::uint64_t time = 0; // elapsed time at this state (quanta, or steps when untimed)
+  std::vector<Word> state;
+};
+
+struct Trace {
+  std::vector<TraceStep> steps;
+  std::optional<std::size_t> loop_start;
+
+  std::size_t length() const { return steps.empty() ? 0 : steps.size() - 1; }
+};
+
+// The path of parents from a start state to `id`, with each step's action recovered by
+// regenerating the parent's successors (the first one equal to the child).
+Trace trace_to(const tioa::SuccessorGenerator& generator, const Exploration& ex, StateId id);
+
+// Appends a step from the trace's last state to `next`; false when no step leads there.
+bool extend(const tioa::SuccessorGenerator& generator, Trace& trace, const Word* next);
+
+// Checks that every step is a transition of the model, that times add up, and that a
+// lasso closes. `why` says what is wrong when it returns false.
+bool replay(const tioa::SuccessorGenerator& generator, const Trace& trace, std::string* why);
+
+// The state as (variable, value) pairs, in declaration order.
+std::vector<std::pair<std::string, std::string>> render_state(const tioa::StateLayout& layout,
+                                                              const Word* state);
+
+} // namespace checker

@@ -1,0 +1,116 @@
+#include "models/fischer/fischer.hpp"
+
+#include <algorithm>
+
+namespace models {
+
+using tioa::Params;
+using tioa::State;
+
+namespace {
+enum class Loc { idle, req, wait, cs };
+}
+
+ModelInstance build_fischer(int n, int a, int b) {
+  const int cmax = std::max(a, b) + 1;
+  const std::size_t count = static_cast<std::size_t>(n);
+  tioa::Automaton f("fischer");
+  // State: shared id in 0..N (0 = free); per process p = 1..N (index p-1) a location and
+  // an integer clock in 0..CMAX. One start state: id = 0, all IDLE, all clocks 0.
+  const auto id = f.integer("id", 0, n, 0);
+  const auto loc = f.enumerations<Loc>("loc", count, {"IDLE", "REQ", "WAIT", "CS"}, Loc::idle);
+  const auto c = f.clocks("c", count, cmax, 0);
+  const tioa::ParamRange process{"p", 1, n};
+
+  // | try   | loc[p] == IDLE && id == 0           | loc[p] := REQ;  c[p] := 0          |
+  f.internal("try", {process})
+      .pre([=](const State& s, const Params& x) { return s[loc[x[0] - 1]] == Loc::idle && s[id] == 0; })
+      .eff([=](State& s, const Params& x) {
+        s[loc[x[0] - 1]] = Loc::req;
+        s[c[x[0] - 1]] = 0;
+      });
+  // | set   | loc[p] == REQ                       | loc[p] := WAIT; id := p; c[p] := 0 |
+  f.internal("set", {process})
+      .pre([=](const State& s, const Params& x) { return s[loc[x[0] - 1]] == Loc::req; })
+      .eff([=](State& s, const Params& x) {
+        s[loc[x[0] - 1]] = Loc::wait;
+        s[id] = x[0];
+        s[c[x[0] - 1]] = 0;
+      });
+  // | enter | loc[p] == WAIT && c[p] >= B && id == p | loc[p] := CS; c[p] := 0          |
+  f.internal("enter", {process})
+      .pre([=](const State& s, const Params& x) {
+        return s[loc[x[0] - 1]] == Loc::wait && s[c[x[0] - 1]] >= b && s[id] == x[0];
+      })
+      .eff([=](State& s, const Params& x) {
+        s[loc[x[0] - 1]] = Loc::cs;
+        s[c[x[0] - 1]] = 0;
+      });
+  // | fail  | loc[p] == WAIT && c[p] >= B && id != p | loc[p] := IDLE; c[p] := 0        |
+  f.internal("fail", {process})
+      .pre([=](const State& s, const Params& x) {
+        return s[loc[x[0] - 1]] == Loc::wait && s[c[x[0] - 1]] >= b && s[id] != x[0];
+      })
+      .eff([=](State& s, const Params& x) {
+        s[loc[x[0] - 1]] = Loc::idle;
+        s[c[x[0] - 1]] = 0;
+      });
+  // | exit  | loc[p] == CS                        | loc[p] := IDLE; id := 0            |
+  f.internal("exit", {process})
+      .pre([=](const State& s, const Params& x) { return s[loc[x[0] - 1]] == Loc::cs; })
+      .eff([=](State& s, const Params& x) {
+        s[loc[x[0] - 1]] = Loc::idle;
+        s[id] = 0;
+      });
+
+  // Time: a global tick, enabled iff no process is in REQ with c[p] >= A (urgency); it
+  // advances the clocks of REQ and WAIT processes, saturating at CMAX.
+  f.trajectories(
+      [=](State& s) {
+        for (std::size_t p = 0; p < count; ++p)
+          if (s[loc[p]] == Loc::req || s[loc[p]] == Loc::wait)
+            s.advance(c[p]);
+      },
+      [=](const State& s) {
+        for (std::size_t p = 0; p < count; ++p)
+          if (s[loc[p]] == Loc::req && s[c[p]] >= a)
+            return true;
+        return false;
+      });
+
+  using checker::PropertyKind;
+  ModelInstance m{f, {}, "1 time unit (A, B and the clocks are whole numbers of quanta)"};
+  m.properties = {
+      {"mutex", "invariant: at most one process is in CS", PropertyKind::invariant,
+       [=](const State& s) {
+         return std::count_if(loc.begin(), loc.end(),
+                              [&](const auto& l) { return s[l] == Loc::cs; }) <= 1;
+       },
+       "at most one in CS", {}, ""},
+      {"no-timelock", "every reachable state has an action or a tick", PropertyKind::deadlock, {},
+       "", {}, ""},
+  };
+  return m;
+}
+
+ModelDefinition fischer_definition() {
+  ModelDefinition d;
+  d.name = "fischer";
+  d.description = "Fischer's mutual exclusion protocol in discrete time (time: quanta)";
+  d.params = {{"N", 3, 2, 12, "number of processes 1..N"},
+              {"A", 1, 0, 30, "bound on the time from try to set (urgency)"},
+              {"B", 2, 0, 30, "time a process waits before it checks id"}};
+  d.properties = {{"mutex", "invariant: at most one process is in CS"},
+                  {"no-timelock", "no reachable state where neither an action nor a tick is possible"}};
+  d.build = [](const ParamValues& p) {
+    return build_fischer(static_cast<int>(p.at("N")), static_cast<int>(p.at("A")),
+                         static_cast<int>(p.at("B")));
+  };
+  using checker::Verdict;
+  d.suite = {{{{"N", 4}, {"A", 1}, {"B", 2}}, "mutex", Verdict::holds},
+             {{{"N", 4}, {"A", 1}, {"B", 2}}, "no-timelock", Verdict::holds},
+             {{{"N", 3}, {"A", 2}, {"B", 1}}, "mutex", Verdict::violated}};
+  return d;
+}
+
+} // namespace models

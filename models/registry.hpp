@@ -1,0 +1,64 @@
+#pragma once
+// The built-in models: their names, parameters (with defaults and ranges), properties,
+// and the instances the default suite checks.
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "checker/property.hpp"
+#include "tioa/automaton.hpp"
+
+namespace models {
+
+struct ParamSpec {
+  std::string name;
+  std::int64_t default_value = 0;
+  std::int64_t lo = 0;
+  std::int64_t hi = 0;
+  std::string description;
+};
+
+using ParamValues = std::map<std::string, std::int64_t>;
+
+struct ModelInstance {
+  tioa::Automaton system;
+  std::vector<checker::Property> properties;
+  // What one tick is, for timed models ("" when untimed: time is counted in steps).
+  std::string quantum;
+};
+
+// One entry of the default suite: an instance, a property, and the verdict we expect.
+struct SuiteEntry {
+  ParamValues params;
+  std::string property;
+  checker::Verdict expected;
+};
+
+struct ModelDefinition {
+  std::string name;
+  std::string description;
+  std::vector<ParamSpec> params;
+  std::vector<std::pair<std::string, std::string>> properties; // name, description
+  // Rules between parameters; returns the reason when the values do not fit together.
+  std::function<std::optional<std::string>(const ParamValues&)> check_params;
+  std::function<ModelInstance(const ParamValues&)> build;
+  std::vector<SuiteEntry> suite;
+};
+
+// Bad input from a user: an unknown model, parameter or property, a malformed value.
+class UsageError : public std::runtime_error {
+public:
+  explicit UsageError(const std::string& what) : std::runtime_error(what) {}
+};
+
+const std::vector<ModelDefinition>& all_models();
+const ModelDefinition& find_model(const std::string& name); // throws UsageError
+
+// Defaults overridden by "name=value" settings; every value parsed and range-checked.
+ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::string>& settings);
+
+} // namespace models

@@ -1,0 +1,151 @@
+#include "tioa/automaton.hpp"
+
+#include "tioa/errors.hpp"
+
+namespace tioa {
+
+TransitionBuilder& TransitionBuilder::pre(Guard precondition) {
+  automaton_->transition(action_).precondition = std::move(precondition);
+  return *this;
+}
+
+TransitionBuilder& TransitionBuilder::eff(Effect effect) {
+  automaton_->transition(action_).effect = std::move(effect);
+  return *this;
+}
+
+TransitionBuilder& TransitionBuilder::choose(ChoiceCount count, ChoiceEffect effect) {
+  Transition& t = automaton_->transition(action_);
+  t.choices = std::move(count);
+  t.choice_effect = std::move(effect);
+  return *this;
+}
+
+TransitionBuilder& TransitionBuilder::choose(std::uint32_t count, ChoiceEffect effect) {
+  return choose([count](const State&, const Params&) { return count; }, std::move(effect));
+}
+
+Automaton::Automaton(std::string name) : name_(std::move(name)) {
+  if (name_.empty())
+    throw ModelError("an automaton needs a name");
+}
+
+Slot Automaton::declare(VariableInfo info) {
+  declared_start_.reset();
+  return layout_.add(std::move(info)).slot();
+}
+
+Variable<bool> Automaton::boolean(const std::string& name, std::optional<bool> initial) {
+  VariableInfo info;
+  info.name = name;
+  info.kind = VariableKind::boolean;
+  info.hi = 1;
+  if (initial)
+    info.initial_code = *initial ? 1 : 0;
+  return Variable<bool>{declare(std::move(info))};
+}
+
+Variable<int> Automaton::integer(const std::string& name, int lo, int hi,
+                                 std::optional<int> initial) {
+  VariableInfo info;
+  info.name = name;
+  info.lo = lo;
+  info.hi = hi;
+  if (initial) {
+    if (*initial < lo || *initial > hi)
+      throw ModelError("initial value of '" + name + "' is outside " + std::to_string(lo) +
+                       ".." + std::to_string(hi));
+    info.initial_code = static_cast<std::uint64_t>(*initial - lo);
+  }
+  return Variable<int>{declare(std::move(info))};
+}
+
+Variable<int> Automaton::clock(const std::string& name, int cap, std::optional<int> initial,
+                               bool with_bottom) {
+  if (cap < 0)
+    throw ModelError("clock '" + name + "' needs a cap of at least 0");
+  VariableInfo info;
+  info.name = name;
+  info.kind = VariableKind::clock;
+  info.hi = cap;
+  info.has_bottom = with_bottom;
+  if (initial) {
+    if (*initial < 0 || *initial > cap)
+      throw ModelError("initial value of clock '" + name + "' is outside 0.." +
+                       std::to_string(cap));
+    info.initial_code = static_cast<std::uint64_t>(*initial);
+  }
+  return Variable<int>{declare(std::move(info))};
+}
+
+VariableArray<bool> Automaton::booleans(const std::string& name, std::size_t count,
+                                        std::optional<bool> initial) {
+  VariableArray<bool> out;
+  for (std::size_t i = 0; i < count; ++i)
+    out.items.push_back(boolean(indexed(name, i), initial));
+  return out;
+}
+
+VariableArray<int> Automaton::integers(const std::string& name, std::size_t count, int lo, int hi,
+                                       std::optional<int> initial) {
+  VariableArray<int> out;
+  for (std::size_t i = 0; i < count; ++i)
+    out.items.push_back(integer(indexed(name, i), lo, hi, initial));
+  return out;
+}
+
+VariableArray<int> Automaton::clocks(const std::string& name, std::size_t count, int cap,
+                                     std::optional<int> initial, bool with_bottom) {
+  VariableArray<int> out;
+  for (std::size_t i = 0; i < count; ++i)
+    out.items.push_back(clock(indexed(name, i), cap, initial, with_bottom));
+  return out;
+}
+
+TransitionBuilder Automaton::declare_action(const std::string& name, ActionKind kind,
+                                            std::vector<ParamRange> params) {
+  if (params.size() > max_params)
+    throw ModelError("action '" + name + "' has more than " + std::to_string(max_params) +
+                     " parameters");
+  for (const auto& existing : actions_)
+    if (existing.name == name)
+      throw ModelError("action '" + name + "' is declared twice in " + name_);
+  return TransitionBuilder(*this, add_action(ActionSignature{name, kind, std::move(params)}, {}));
+}
+
+TransitionBuilder Automaton::input(const std::string& name, std::vector<ParamRange> params) {
+  return declare_action(name, ActionKind::input, std::move(params));
+}
+TransitionBuilder Automaton::output(const std::string& name, std::vector<ParamRange> params) {
+  return declare_action(name, ActionKind::output, std::move(params));
+}
+TransitionBuilder Automaton::internal(const std::string& name, std::vector<ParamRange> params) {
+  return declare_action(name, ActionKind::internal, std::move(params));
+}
+
+std::size_t Automaton::add_action(ActionSignature signature, Transition transition) {
+  actions_.push_back(std::move(signature));
+  transitions_.push_back(std::move(transition));
+  return actions_.size() - 1;
+}
+
+void Automaton::trajectories(Evolve evolve, StatePredicate stop_when) {
+  trajectories_ = Trajectories{true, std::move(evolve), std::move(stop_when)};
+}
+
+const StartSet& Automaton::start() const {
+  if (start_)
+    return *start_;
+  if (!declared_start_)
+    declared_start_ = StartSet::declared(layout_);
+  return *declared_start_;
+}
+
+std::optional<std::size_t> Automaton::find_action(const std::string& name) const {
+  for (std::size_t i = 0; i < actions_.size(); ++i)
+    if (actions_[i].name == name)
+      return i;
+  return std::nullopt;
+}
+
+} // namespace tioa

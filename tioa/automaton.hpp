@@ -1,0 +1,161 @@
+#pragma once
+// A timed I/O automaton (seed 000 §3.1, Def 3.1) over discretised time, written the way
+// the papers' figures are: a signature, state variables with initial values, one
+// transition per action (precondition + effect), and trajectories (evolve one time
+// quantum; stop-when: time cannot pass while it holds).
+//
+//   Automaton ring("token-ring");
+//   auto x = ring.integers("x", n, 0, k - 1);
+//   ring.internal("move", {{"i", 1, n - 1}})
+//       .pre([=](const State& s, const Params& a) { return s[x[a[0]]] != s[x[a[0] - 1]]; })
+//       .eff([=](State& s, const Params& a) { s[x[a[0]]] = s[x[a[0] - 1]]; });
+//
+// Nondeterminism inside an effect is a `choose(count, effect)`: the effect runs once for
+// each choice 0..count-1, each giving its own successor.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tioa/actions.hpp"
+#include "tioa/start_set.hpp"
+#include "tioa/state.hpp"
+#include "tioa/variables.hpp"
+
+namespace tioa {
+
+using Guard = std::function<bool(const State&, const Params&)>;
+using Effect = std::function<void(State&, const Params&)>;
+using ChoiceCount = std::function<std::uint32_t(const State&, const Params&)>;
+using ChoiceEffect = std::function<void(State&, const Params&, std::uint32_t choice)>;
+using Evolve = std::function<void(State&)>;
+
+// The transition of one action: when it is enabled and what it does.
+struct Transition {
+  Guard precondition;         // empty: always enabled
+  Effect effect;              // deterministic effect (empty: no change), or
+  ChoiceEffect choice_effect; // one effect per choice, with
+  ChoiceCount choices;        // the number of choices in this state (empty: 1)
+
+  bool enabled(const State& s, const Params& p) const { return !precondition || precondition(s, p); }
+  std::uint32_t choice_count(const State& s, const Params& p) const {
+    return choices ? choices(s, p) : 1;
+  }
+  void apply(State& s, const Params& p, std::uint32_t choice) const {
+    if (choice_effect)
+      choice_effect(s, p, choice);
+    else if (effect)
+      effect(s, p);
+  }
+};
+
+// Trajectories over discretised time: one tick is one quantum.
+struct Trajectories {
+  bool timed = false;
+  Evolve evolve;            // the state one quantum later (empty: nothing changes)
+  StatePredicate stop_when; // time cannot pass while this holds (empty: never)
+};
+
+class Automaton;
+
+// Returned by input()/output()/internal() to give the action its transition.
+class TransitionBuilder {
+public:
+  TransitionBuilder(Automaton& automaton, std::size_t action)
+      : automaton_(&automaton), action_(action) {}
+  TransitionBuilder& pre(Guard precondition);
+  TransitionBuilder& eff(Effect effect);
+  TransitionBuilder& choose(ChoiceCount count, ChoiceEffect effect);
+  TransitionBuilder& choose(std::uint32_t count, ChoiceEffect effect);
+
+private:
+  Automaton* automaton_;
+  std::size_t action_;
+};
+
+class Automaton {
+public:
+  explicit Automaton(std::string name);
+
+  const std::string& name() const { return name_; }
+
+  // ---- state variables; an initial value of nullopt means "arbitrary at start"
+  Variable<bool> boolean(const std::string& name, std::optional<bool> initial);
+  Variable<int> integer(const std::string& name, int lo, int hi, std::optional<int> initial);
+  // A clock counted in quanta, saturating at `cap` (read "cap or more"); optionally ⊥.
+  Variable<int> clock(const std::string& name, int cap, std::optional<int> initial,
+                      bool with_bottom = false);
+  template <class E>
+  Variable<E> enumeration(const std::string& name, std::vector<std::string> names,
+                          std::optional<E> initial) {
+    VariableInfo info;
+    info.name = name;
+    info.kind = VariableKind::enumeration;
+    info.hi = static_cast<std::int64_t>(names.size()) - 1;
+    info.enum_names = std::move(names);
+    if (initial)
+      info.initial_code = static_cast<std::uint64_t>(*initial);
+    return Variable<E>{declare(std::move(info))};
+  }
+  VariableArray<bool> booleans(const std::string& name, std::size_t count,
+                               std::optional<bool> initial);
+  VariableArray<int> integers(const std::string& name, std::size_t count, int lo, int hi,
+                              std::optional<int> initial);
+  VariableArray<int> clocks(const std::string& name, std::size_t count, int cap,
+                            std::optional<int> initial, bool with_bottom = false);
+  template <class E>
+  VariableArray<E> enumerations(const std::string& name, std::size_t count,
+                                const std::vector<std::string>& names, std::optional<E> initial) {
+    VariableArray<E> out;
+    for (std::size_t i = 0; i < count; ++i)
+      out.items.push_back(enumeration<E>(indexed(name, i), names, initial));
+    return out;
+  }
+
+  // ---- signature and transitions
+  TransitionBuilder input(const std::string& name, std::vector<ParamRange> params = {});
+  TransitionBuilder output(const std::string& name, std::vector<ParamRange> params = {});
+  TransitionBuilder internal(const std::string& name, std::vector<ParamRange> params = {});
+
+  // ---- trajectories: makes the automaton timed
+  void trajectories(Evolve evolve, StatePredicate stop_when = {});
+
+  // ---- start states (the declared initial values unless set)
+  void set_start(StartSet start) { start_ = std::move(start); }
+  const StartSet& start() const;
+
+  const StateLayout& layout() const { return layout_; }
+  std::uint32_t words() const { return layout_.words(); }
+  const std::vector<ActionSignature>& actions() const { return actions_; }
+  const std::vector<Transition>& transitions() const { return transitions_; }
+  const Trajectories& trajectory() const { return trajectories_; }
+  bool timed() const { return trajectories_.timed; }
+  std::optional<std::size_t> find_action(const std::string& name) const;
+
+  // ---- used by the operators (compose, Fail, hide) that build automata from automata
+  std::size_t add_action(ActionSignature signature, Transition transition);
+  Transition& transition(std::size_t action) { return transitions_.at(action); }
+  ActionSignature& signature(std::size_t action) { return actions_.at(action); }
+  StateLayout& mutable_layout() { return layout_; }
+  void set_trajectories(Trajectories t) { trajectories_ = std::move(t); }
+  void rename(std::string name) { name_ = std::move(name); }
+
+private:
+  Slot declare(VariableInfo info);
+  TransitionBuilder declare_action(const std::string& name, ActionKind kind,
+                                   std::vector<ParamRange> params);
+  static std::string indexed(const std::string& name, std::size_t i) {
+    return name + "[" + std::to_string(i) + "]";
+  }
+
+  std::string name_;
+  StateLayout layout_;
+  std::vector<ActionSignature> actions_;
+  std::vector<Transition> transitions_;
+  Trajectories trajectories_;
+  std::optional<StartSet> start_;
+  mutable std::optional<StartSet> declared_start_;
+};
+
+} // namespace tioa

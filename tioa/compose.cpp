@@ -1,0 +1,240 @@
+#include "tioa/compose.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <set>
+
+#include "tioa/errors.hpp"
+
+namespace tioa {
+
+namespace {
+
+struct Placed {
+  const Automaton* automaton;
+  std::uint32_t base;
+};
+
+// One component's part in a composite action: its transition and where its state lives.
+struct Participant {
+  Transition transition;
+  ActionSignature signature;
+  std::uint32_t base;
+  std::string component;
+};
+
+void check_compatible(const std::vector<Automaton>& components) {
+  std::set<std::string> names;
+  for (const auto& c : components)
+    if (!names.insert(c.name()).second)
+      throw ModelError("incompatible composition: component '" + c.name() +
+                       "' appears twice, so its variables would be shared");
+  for (std::size_t i = 0; i < components.size(); ++i)
+    for (std::size_t j = 0; j < components.size(); ++j) {
+      if (i == j)
+        continue;
+      for (const auto& a : components[i].actions())
+        for (const auto& b : components[j].actions()) {
+          if (!a.overlaps(b))
+            continue;
+          if (i < j && a.kind == ActionKind::output && b.kind == ActionKind::output)
+            throw ModelError("incompatible composition: '" + components[i].name() + "' and '" +
+                             components[j].name() + "' both output '" + a.name + "'");
+          if (a.kind == ActionKind::internal)
+            throw ModelError("incompatible composition: internal action '" + a.name + "' of '" +
+                             components[i].name() + "' is an action of '" +
+                             components[j].name() + "'");
+        }
+    }
+}
+
+// Runs the owner's transition and every receiving input, choice by choice (mixed radix).
+Transition synchronised(std::vector<Participant> parts) {
+  auto shared = std::make_shared<const std::vector<Participant>>(std::move(parts));
+  Transition t;
+  const Participant& owner = shared->front();
+  if (owner.transition.precondition) {
+    auto guard = owner.transition.precondition;
+    const std::uint32_t base = owner.base;
+    t.precondition = [guard, base](const State& s, const Params& p) { return guard(s.at(base), p); };
+  }
+  auto receives = [](const Participant& part, const Params& p) {
+    return part.signature.kind != ActionKind::input || part.signature.contains(p);
+  };
+  t.choices = [shared, receives](const State& s, const Params& p) {
+    std::uint32_t count = 1;
+    for (const auto& part : *shared)
+      if (receives(part, p))
+        count *= part.transition.choice_count(s.at(part.base), p);
+    return count;
+  };
+  t.choice_effect = [shared, receives](State& s, const Params& p, std::uint32_t choice) {
+    // Choice counts are read before any effect runs, so all parts see the pre-state.
+    std::uint32_t counts[64];
+    const std::size_t n = std::min<std::size_t>(shared->size(), 64);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Participant& part = (*shared)[i];
+      counts[i] = receives(part, p) ? part.transition.choice_count(s.at(part.base), p) : 1;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const Participant& part = (*shared)[i];
+      if (!receives(part, p))
+        continue;
+      State local = s.at(part.base);
+      if (part.signature.kind == ActionKind::input && !part.transition.enabled(local, p))
+        throw ModelError("input '" + part.signature.label(p) + "' is not enabled in component '" +
+                         part.component + "' (TIOA requires input enabling)");
+      part.transition.apply(local, p, choice % counts[i]);
+      choice /= counts[i];
+    }
+  };
+  return t;
+}
+
+} // namespace
+
+Automaton compose(const std::string& name, const std::vector<Automaton>& components) {
+  if (components.empty())
+    throw ModelError("composition '" + name + "' has no components");
+  if (components.size() > 64)
+    throw ModelError("composition '" + name + "' has more than 64 components");
+  check_compatible(components);
+
+  Automaton out(name);
+  std::vector<Placed> placed;
+  for (const auto& c : components)
+    placed.push_back({&c, out.mutable_layout().append(c.layout(), c.name() + ".")});
+
+  std::set<std::string> output_names;
+  for (const auto& c : components)
+    for (const auto& a : c.actions())
+      if (a.kind == ActionKind::output)
+        output_names.insert(a.name);
+
+  auto inputs_named = [&](const std::string& action, std::size_t skip) {
+    std::vector<Participant> parts;
+    for (std::size_t j = 0; j < placed.size(); ++j) {
+      if (j == skip)
+        continue;
+      const Automaton& c = *placed[j].automaton;
+      for (std::size_t b = 0; b < c.actions().size(); ++b)
+        if (c.actions()[b].kind == ActionKind::input && c.actions()[b].name == action)
+          parts.push_back({c.transitions()[b], c.actions()[b], placed[j].base, c.name()});
+    }
+    return parts;
+  };
+
+  // Outputs and internal actions, each with the inputs it drives.
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    const Automaton& c = *placed[i].automaton;
+    for (std::size_t a = 0; a < c.actions().size(); ++a) {
+      const ActionSignature& sig = c.actions()[a];
+      if (sig.kind == ActionKind::input)
+        continue;
+      std::vector<Participant> parts{{c.transitions()[a], sig, placed[i].base, c.name()}};
+      if (sig.kind == ActionKind::output)
+        for (auto& p : inputs_named(sig.name, i))
+          parts.push_back(std::move(p));
+      out.add_action(sig, synchronised(std::move(parts)));
+    }
+  }
+
+  // Inputs that no component outputs stay inputs of the composite.
+  std::set<std::string> done;
+  for (const auto& p : placed)
+    for (const auto& sig : p.automaton->actions()) {
+      if (sig.kind != ActionKind::input || output_names.count(sig.name) ||
+          !done.insert(sig.name).second)
+        continue;
+      auto parts = inputs_named(sig.name, placed.size());
+      ActionSignature merged = parts.front().signature;
+      for (const auto& part : parts) {
+        if (part.signature.params.size() != merged.params.size())
+          throw ModelError("input '" + sig.name + "' has different arities in different components");
+        for (std::size_t k = 0; k < merged.params.size(); ++k) {
+          merged.params[k].lo = std::min(merged.params[k].lo, part.signature.params[k].lo);
+          merged.params[k].hi = std::max(merged.params[k].hi, part.signature.params[k].hi);
+        }
+      }
+      // The environment drives these: a dummy owner that accepts every point of the box.
+      Participant environment{Transition{}, merged, 0, "environment"};
+      environment.signature.kind = ActionKind::internal;
+      auto sub = parts;
+      Transition t;
+      {
+        std::vector<Participant> all{environment};
+        all.insert(all.end(), sub.begin(), sub.end());
+        t = synchronised(std::move(all));
+      }
+      auto receivers = std::make_shared<const std::vector<Participant>>(std::move(sub));
+      t.precondition = [receivers](const State&, const Params& p) {
+        return std::any_of(receivers->begin(), receivers->end(),
+                           [&](const Participant& r) { return r.signature.contains(p); });
+      };
+      out.add_action(merged, std::move(t));
+    }
+
+  // Time passes in the composite when it can pass in every timed component.
+  std::vector<std::pair<Trajectories, std::uint32_t>> timed;
+  for (const auto& p : placed)
+    if (p.automaton->timed())
+      timed.emplace_back(p.automaton->trajectory(), p.base);
+  if (!timed.empty()) {
+    auto parts = std::make_shared<const decltype(timed)>(std::move(timed));
+    out.trajectories(
+        [parts](State& s) {
+          for (const auto& [traj, base] : *parts)
+            if (traj.evolve) {
+              State local = s.at(base);
+              traj.evolve(local);
+            }
+        },
+        [parts](const State& s) {
+          for (const auto& [traj, base] : *parts)
+            if (traj.stop_when && traj.stop_when(s.at(base)))
+              return true;
+          return false;
+        });
+  }
+
+  // Start states: the product of the components' start sets.
+  struct Part {
+    StartSet start;
+    std::uint32_t base;
+  };
+  auto starts = std::make_shared<std::vector<Part>>();
+  std::string description;
+  for (const auto& p : placed) {
+    starts->push_back({p.automaton->start(), p.base});
+    description += (description.empty() ? "" : " × ") + p.automaton->start().description();
+  }
+  out.set_start(StartSet(
+      "product of " + description, [starts](Word* words, std::uint32_t base, const StartSet::Visit& visit) {
+        std::function<void(std::size_t)> level = [&](std::size_t i) {
+          if (i == starts->size()) {
+            visit();
+            return;
+          }
+          (*starts)[i].start.enumerate(words, base + (*starts)[i].base, [&] { level(i + 1); });
+        };
+        level(0);
+      }));
+  return out;
+}
+
+Automaton operator||(const Automaton& a, const Automaton& b) {
+  return compose(a.name() + "||" + b.name(), {a, b});
+}
+
+Automaton hide(const Automaton& automaton, const std::vector<std::string>& outputs) {
+  Automaton out = automaton;
+  for (const auto& name : outputs) {
+    auto index = out.find_action(name);
+    if (!index || out.actions()[*index].kind != ActionKind::output)
+      throw ModelError("cannot hide '" + name + "': it is not an output of " + automaton.name());
+    out.signature(*index).kind = ActionKind::internal;
+  }
+  return out;
+}
+
+} // namespace tioa

@@ -1,0 +1,111 @@
+#pragma once
+// A view on one automaton's part of a packed state. Transitions read and write variables
+// through it the way the papers' figures do: `s[loc[p]] = Loc::req`, `if (s[x] == 3)`.
+
+#include <string>
+#include <type_traits>
+
+#include "tioa/errors.hpp"
+#include "tioa/variables.hpp"
+
+namespace tioa {
+
+class State;
+
+// What `state[variable]` returns: reads convert to T, assignments check the domain.
+template <class T> class VariableRef {
+public:
+  VariableRef(State& state, const Slot& slot) : state_(state), slot_(slot) {}
+  operator T() const;
+  VariableRef& operator=(T value);
+  VariableRef& operator=(const VariableRef& other) { return *this = static_cast<T>(other); }
+
+private:
+  State& state_;
+  const Slot& slot_;
+};
+
+class State {
+public:
+  State(Word* words, std::uint32_t base) : words_(words), base_(base) {}
+  State(const Word* words, std::uint32_t base) : words_(const_cast<Word*>(words)), base_(base) {}
+
+  // The part of this state that belongs to a component placed `offset` bits further on.
+  State at(std::uint32_t offset) const { return State(words_, base_ + offset); }
+
+  std::uint64_t code(const Slot& slot) const {
+    const std::uint32_t bit = base_ + slot.offset;
+    const std::uint32_t word = bit >> 6, shift = bit & 63;
+    std::uint64_t value = words_[word] >> shift;
+    if (shift + slot.width > 64)
+      value |= words_[word + 1] << (64 - shift);
+    return slot.width == 64 ? value : value & ((std::uint64_t{1} << slot.width) - 1);
+  }
+
+  void set_code(const Slot& slot, std::uint64_t code) {
+    const std::uint32_t bit = base_ + slot.offset;
+    const std::uint32_t word = bit >> 6, shift = bit & 63;
+    const std::uint64_t mask =
+        slot.width == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << slot.width) - 1;
+    words_[word] = (words_[word] & ~(mask << shift)) | ((code & mask) << shift);
+    if (shift + slot.width > 64) {
+      const std::uint32_t spill = 64 - shift;
+      words_[word + 1] = (words_[word + 1] & ~(mask >> spill)) | ((code & mask) >> spill);
+    }
+  }
+
+  template <class T> T get(const Variable<T>& v) const {
+    const std::uint64_t c = code(v.slot);
+    if (v.slot.has_bottom && c == v.slot.value_codes)
+      throw ModelError(std::string("read of variable '") + v.slot.name + "' while it is ⊥");
+    if constexpr (std::is_same_v<T, bool>)
+      return c != 0;
+    else
+      return static_cast<T>(static_cast<std::int64_t>(c) + v.slot.lo);
+  }
+
+  template <class T> void set(const Variable<T>& v, T value) {
+    const std::int64_t code = static_cast<std::int64_t>(value) - v.slot.lo;
+    if (code < 0 || static_cast<std::uint64_t>(code) >= v.slot.value_codes)
+      throw ModelError(std::string("value ") + std::to_string(static_cast<std::int64_t>(value)) +
+                       " is outside the domain of variable '" + v.slot.name + "'");
+    set_code(v.slot, static_cast<std::uint64_t>(code));
+  }
+
+  template <class T> bool is_bottom(const Variable<T>& v) const {
+    return v.slot.has_bottom && code(v.slot) == v.slot.value_codes;
+  }
+  template <class T> void set_bottom(const Variable<T>& v) {
+    if (!v.slot.has_bottom)
+      throw ModelError(std::string("variable '") + v.slot.name + "' has no ⊥");
+    set_code(v.slot, v.slot.value_codes);
+  }
+
+  // One quantum of time for a clock: +1, saturating at its cap; ⊥ stays ⊥.
+  void advance(const Variable<int>& clock) {
+    const std::uint64_t c = code(clock.slot);
+    if (c + 1 < clock.slot.value_codes)
+      set_code(clock.slot, c + 1);
+  }
+
+  template <class T> VariableRef<T> operator[](const Variable<T>& v) {
+    return VariableRef<T>(*this, v.slot);
+  }
+  template <class T> T operator[](const Variable<T>& v) const { return get(v); }
+
+  Word* words() const { return words_; }
+  std::uint32_t base() const { return base_; }
+
+private:
+  Word* words_;
+  std::uint32_t base_;
+};
+
+template <class T> VariableRef<T>::operator T() const { return state_.get(Variable<T>{slot_}); }
+
+template <class T> VariableRef<T>& VariableRef<T>::operator=(T value) {
+  state_.set(Variable<T>{slot_}, value);
+  return *this;
+}
+
+} // namespace tioa

@@ -1,0 +1,93 @@
+#pragma once
+// The one-step semantics of an automaton over discretised time: from a state, every
+// discrete transition (every action, every parameter value, every choice) and then one
+// tick of time. Inputs of the automaton itself are driven by its environment: they may
+// occur in any state, with any parameter value of their box.
+//
+// Time: in a timed automaton a tick lasts one quantum and discrete steps take no time;
+// in an untimed one each discrete step counts as one unit ("steps").
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "tioa/automaton.hpp"
+
+namespace tioa {
+
+struct StepLabel {
+  static constexpr std::uint32_t tick = 0xffffffffu;
+  std::uint32_t action = tick;
+  Params params;
+  std::uint32_t choice = 0;
+  bool is_tick() const { return action == tick; }
+};
+
+class SuccessorGenerator {
+public:
+  explicit SuccessorGenerator(const Automaton& automaton)
+      : automaton_(&automaton), words_(automaton.words()) {}
+
+  std::uint32_t words() const { return words_; }
+  bool timed() const { return automaton_->timed(); }
+  const Automaton& automaton() const { return *automaton_; }
+
+  // Time a step takes: a tick in a timed automaton, any step in an untimed one.
+  std::uint32_t duration(const StepLabel& label) const {
+    return timed() ? (label.is_tick() ? 1u : 0u) : 1u;
+  }
+
+  // Calls emit(successor, label) for each successor; `scratch` holds words()+1 words.
+  // The successor buffer is only valid during the call. Returns the number emitted.
+  template <class Emit>
+  std::size_t successors(const Word* state, Word* scratch, Emit&& emit) const {
+    std::size_t count = 0;
+    const State from(state, 0);
+    const auto& actions = automaton_->actions();
+    const auto& transitions = automaton_->transitions();
+    StepLabel label;
+    for (std::uint32_t a = 0; a < actions.size(); ++a) {
+      const Transition& t = transitions[a];
+      label.action = a;
+      for_each_params(actions[a].params, [&](const Params& p) {
+        if (!t.enabled(from, p))
+          return;
+        label.params = p;
+        const std::uint32_t choices = t.choice_count(from, p);
+        for (std::uint32_t c = 0; c < choices; ++c) {
+          std::memcpy(scratch, state, words_ * sizeof(Word));
+          State to(scratch, 0);
+          t.apply(to, p, c);
+          label.choice = c;
+          emit(static_cast<const Word*>(scratch), static_cast<const StepLabel&>(label));
+          ++count;
+        }
+      });
+    }
+    const Trajectories& traj = automaton_->trajectory();
+    if (traj.timed && !(traj.stop_when && traj.stop_when(from))) {
+      std::memcpy(scratch, state, words_ * sizeof(Word));
+      State to(scratch, 0);
+      if (traj.evolve)
+        traj.evolve(to);
+      emit(static_cast<const Word*>(scratch), StepLabel{});
+      ++count;
+    }
+    return count;
+  }
+
+  std::string describe(const StepLabel& label) const {
+    if (label.is_tick())
+      return "tick";
+    std::string text = automaton_->actions()[label.action].label(label.params);
+    if (label.choice != 0)
+      text += " [choice " + std::to_string(label.choice) + "]";
+    return text;
+  }
+
+private:
+  const Automaton* automaton_;
+  std::uint32_t words_;
+};
+
+} // namespace tioa

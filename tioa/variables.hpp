@@ -1,0 +1,79 @@
+#pragma once
+// State variables of a TIOA (seed 000 §3.1, Def 3.1 (a)): every variable has a finite
+// domain so that U(A) can enumerate every valuation. Values are stored as small unsigned
+// codes packed into 64-bit words; a Variable<T> handle says where and how.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace tioa {
+
+using Word = std::uint64_t;
+
+enum class VariableKind { boolean, integer, enumeration, clock };
+
+// Where a variable lives inside the state of the automaton that declared it.
+// `offset` is relative to the first bit of that automaton's part of a state.
+struct Slot {
+  std::uint32_t offset = 0;
+  std::uint8_t width = 0;
+  std::int64_t lo = 0;
+  std::uint64_t value_codes = 0; // number of codes for values (hi - lo + 1)
+  bool has_bottom = false;       // code `value_codes` is ⊥
+  const char* name = "";         // interned, for error messages
+};
+
+// A typed handle on a state variable; T is bool, int, or an enum type.
+template <class T> struct Variable {
+  Slot slot;
+};
+
+template <class T> struct VariableArray {
+  std::vector<Variable<T>> items;
+  const Variable<T>& operator[](std::size_t i) const { return items.at(i); }
+  std::size_t size() const { return items.size(); }
+  auto begin() const { return items.begin(); }
+  auto end() const { return items.end(); }
+};
+
+struct VariableInfo {
+  std::string name;
+  VariableKind kind = VariableKind::integer;
+  std::int64_t lo = 0;
+  std::int64_t hi = 0;
+  bool has_bottom = false;
+  std::vector<std::string> enum_names;
+  // The value at start (a code); nullopt means "any value of the domain".
+  std::optional<std::uint64_t> initial_code;
+  std::uint32_t offset = 0;
+  std::uint8_t width = 0;
+
+  std::uint64_t value_codes() const { return static_cast<std::uint64_t>(hi - lo + 1); }
+  std::uint64_t code_count() const { return value_codes() + (has_bottom ? 1 : 0); }
+  Slot slot() const;
+  std::string render_code(std::uint64_t code) const;
+};
+
+// The variables of one automaton in declaration order, packed bit after bit.
+class StateLayout {
+public:
+  const VariableInfo& add(VariableInfo info);
+  const std::vector<VariableInfo>& variables() const { return variables_; }
+  std::uint32_t bits() const { return bits_; }
+  std::uint32_t words() const { return bits_ == 0 ? 1 : (bits_ + 63) / 64; }
+  const VariableInfo* find(const std::string& name) const;
+  // Appends `other` at bit `bits()`, prefixing every name; returns the base offset used.
+  std::uint32_t append(const StateLayout& other, const std::string& prefix);
+
+private:
+  std::vector<VariableInfo> variables_;
+  std::uint32_t bits_ = 0;
+};
+
+// Names live for the whole program so that slots can point at them cheaply.
+const char* intern(const std::string& name);
+
+} // namespace tioa
