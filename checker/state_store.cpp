@@ -1,25 +1,8 @@
 #include "checker/state_store.hpp"
 
-#include <cstring>
 #include <stdexcept>
 
 namespace checker {
-
-std::uint64_t hash_state(const Word* state, std::uint32_t words) {
-  std::uint64_t h = 0x243f6a8885a308d3ull ^ words;
-  for (std::uint32_t i = 0; i < words; ++i) {
-    h ^= state[i];
-    h *= 0x9e3779b97f4a7c15ull;
-    h ^= h >> 29;
-  }
-  // Final avalanche (MurmurHash3 fmix64).
-  h ^= h >> 33;
-  h *= 0xff51afd7ed558ccdull;
-  h ^= h >> 33;
-  h *= 0xc4ceb9fe1a85ec53ull;
-  h ^= h >> 33;
-  return h;
-}
 
 StateStore::StateStore(std::uint32_t words) : words_(words) {
   table_.assign(1024, 0);
@@ -27,7 +10,11 @@ StateStore::StateStore(std::uint32_t words) : words_(words) {
 }
 
 bool StateStore::equal(StateId id, const Word* state) const {
-  return std::memcmp(this->state(id), state, words_ * sizeof(Word)) == 0;
+  const Word* stored = this->state(id);
+  for (std::uint32_t i = 0; i < words_; ++i)
+    if (stored[i] != state[i])
+      return false;
+  return true;
 }
 
 std::optional<StateId> StateStore::find(const Word* state, std::uint64_t hash) const {

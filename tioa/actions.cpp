@@ -1,5 +1,8 @@
 #include "tioa/actions.hpp"
 
+#include "tioa/errors.hpp"
+#include "tioa/successors.hpp"
+
 namespace tioa {
 
 const char* to_string(ActionKind kind) {
@@ -42,6 +45,11 @@ std::string ActionSignature::label(const Params& p) const {
     out += std::to_string(p[i]);
   }
   return out + ')';
+}
+
+void throw_input_not_enabled(const ActionSignature& action, const Params& params) {
+  throw ModelError("input '" + action.label(params) +
+                   "' is not enabled in an explored state (TIOA requires input enabling)");
 }
 
 } // namespace tioa

@@ -60,6 +60,20 @@ Variable<int> Automaton::integer(const std::string& name, int lo, int hi,
   return Variable<int>{declare(std::move(info))};
 }
 
+Variable<int> Automaton::optional_integer(const std::string& name, int lo, int hi,
+                                          std::optional<int> initial) {
+  VariableInfo info;
+  info.name = name;
+  info.lo = lo;
+  info.hi = hi;
+  info.has_bottom = true;
+  if (initial && (*initial < lo || *initial > hi))
+    throw ModelError("initial value of '" + name + "' is outside " + std::to_string(lo) + ".." +
+                     std::to_string(hi));
+  info.initial_code = initial ? static_cast<std::uint64_t>(*initial - lo) : info.value_codes();
+  return Variable<int>{declare(std::move(info))};
+}
+
 Variable<int> Automaton::clock(const std::string& name, int cap, std::optional<int> initial,
                                bool with_bottom) {
   if (cap < 0)

@@ -83,6 +83,10 @@ public:
   // ---- state variables; an initial value of nullopt means "arbitrary at start"
   Variable<bool> boolean(const std::string& name, std::optional<bool> initial);
   Variable<int> integer(const std::string& name, int lo, int hi, std::optional<int> initial);
+  // An integer that may be ⊥ (the papers' "x := ⊥"): ⊥ at start unless `initial` is
+  // given. Read it only when !s.is_bottom(x); s.set_bottom(x) clears it.
+  Variable<int> optional_integer(const std::string& name, int lo, int hi,
+                                 std::optional<int> initial = std::nullopt);
   // A clock counted in quanta, saturating at `cap` (read "cap or more"); optionally ⊥.
   Variable<int> clock(const std::string& name, int cap, std::optional<int> initial,
                       bool with_bottom = false);

@@ -156,20 +156,18 @@ Automaton compose(const std::string& name, const std::vector<Automaton>& compone
           merged.params[k].hi = std::max(merged.params[k].hi, part.signature.params[k].hi);
         }
       }
-      // The environment drives these: a dummy owner that accepts every point of the box.
+      // The environment drives these: a dummy owner that accepts every point of the box;
+      // a point that no receiver's box contains has no successor (zero choices).
       Participant environment{Transition{}, merged, 0, "environment"};
       environment.signature.kind = ActionKind::internal;
-      auto sub = parts;
-      Transition t;
-      {
-        std::vector<Participant> all{environment};
-        all.insert(all.end(), sub.begin(), sub.end());
-        t = synchronised(std::move(all));
-      }
-      auto receivers = std::make_shared<const std::vector<Participant>>(std::move(sub));
-      t.precondition = [receivers](const State&, const Params& p) {
-        return std::any_of(receivers->begin(), receivers->end(),
-                           [&](const Participant& r) { return r.signature.contains(p); });
+      std::vector<Participant> all{environment};
+      all.insert(all.end(), parts.begin(), parts.end());
+      Transition t = synchronised(std::move(all));
+      auto receivers = std::make_shared<const std::vector<Participant>>(std::move(parts));
+      t.choices = [receivers, count = t.choices](const State& s, const Params& p) {
+        const bool received = std::any_of(receivers->begin(), receivers->end(),
+                                          [&](const Participant& r) { return r.signature.contains(p); });
+        return received ? count(s, p) : 0u;
       };
       out.add_action(merged, std::move(t));
     }

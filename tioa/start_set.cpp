@@ -70,9 +70,7 @@ void copy_bits(Word* dst, std::uint32_t dst_base, const Word* src, std::uint32_t
   State to(dst, dst_base);
   for (std::uint32_t done = 0; done < bits;) {
     const std::uint8_t width = static_cast<std::uint8_t>(std::min<std::uint32_t>(32, bits - done));
-    Slot slot;
-    slot.offset = done;
-    slot.width = width;
+    const Slot slot = Slot::bits(done, width);
     to.set_code(slot, from.code(slot));
     done += width;
   }

@@ -10,6 +10,9 @@
 
 namespace tioa {
 
+[[noreturn]] void throw_out_of_domain(const Slot& slot, std::int64_t value);
+[[noreturn]] void throw_read_of_bottom(const Slot& slot);
+
 class State;
 
 // What `state[variable]` returns: reads convert to T, assignments check the domain.
@@ -37,40 +40,41 @@ public:
     const std::uint32_t bit = base_ + slot.offset;
     const std::uint32_t word = bit >> 6, shift = bit & 63;
     std::uint64_t value = words_[word] >> shift;
-    if (shift + slot.width > 64)
+    if (shift + slot.width > 64) [[unlikely]]
       value |= words_[word + 1] << (64 - shift);
-    return slot.width == 64 ? value : value & ((std::uint64_t{1} << slot.width) - 1);
+    return value & slot.mask;
   }
 
   void set_code(const Slot& slot, std::uint64_t code) {
     const std::uint32_t bit = base_ + slot.offset;
     const std::uint32_t word = bit >> 6, shift = bit & 63;
-    const std::uint64_t mask =
-        slot.width == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << slot.width) - 1;
-    words_[word] = (words_[word] & ~(mask << shift)) | ((code & mask) << shift);
-    if (shift + slot.width > 64) {
+    code &= slot.mask;
+    words_[word] = (words_[word] & ~(slot.mask << shift)) | (code << shift);
+    if (shift + slot.width > 64) [[unlikely]] {
       const std::uint32_t spill = 64 - shift;
-      words_[word + 1] = (words_[word + 1] & ~(mask >> spill)) | ((code & mask) >> spill);
+      words_[word + 1] = (words_[word + 1] & ~(slot.mask >> spill)) | (code >> spill);
     }
   }
 
-  template <class T> T get(const Variable<T>& v) const {
-    const std::uint64_t c = code(v.slot);
-    if (v.slot.has_bottom && c == v.slot.value_codes)
-      throw ModelError(std::string("read of variable '") + v.slot.name + "' while it is ⊥");
+  template <class T> T get(const Slot& slot) const {
+    const std::uint64_t c = code(slot);
+    if (slot.has_bottom && c == slot.value_codes) [[unlikely]]
+      throw_read_of_bottom(slot);
     if constexpr (std::is_same_v<T, bool>)
       return c != 0;
     else
-      return static_cast<T>(static_cast<std::int64_t>(c) + v.slot.lo);
+      return static_cast<T>(static_cast<std::int64_t>(c) + slot.lo);
   }
 
-  template <class T> void set(const Variable<T>& v, T value) {
-    const std::int64_t code = static_cast<std::int64_t>(value) - v.slot.lo;
-    if (code < 0 || static_cast<std::uint64_t>(code) >= v.slot.value_codes)
-      throw ModelError(std::string("value ") + std::to_string(static_cast<std::int64_t>(value)) +
-                       " is outside the domain of variable '" + v.slot.name + "'");
-    set_code(v.slot, static_cast<std::uint64_t>(code));
+  template <class T> void set(const Slot& slot, T value) {
+    const std::int64_t code = static_cast<std::int64_t>(value) - slot.lo;
+    if (code < 0 || static_cast<std::uint64_t>(code) >= slot.value_codes) [[unlikely]]
+      throw_out_of_domain(slot, static_cast<std::int64_t>(value));
+    set_code(slot, static_cast<std::uint64_t>(code));
   }
+
+  template <class T> T get(const Variable<T>& v) const { return get<T>(v.slot); }
+  template <class T> void set(const Variable<T>& v, T value) { set<T>(v.slot, value); }
 
   template <class T> bool is_bottom(const Variable<T>& v) const {
     return v.slot.has_bottom && code(v.slot) == v.slot.value_codes;
@@ -91,7 +95,7 @@ public:
   template <class T> VariableRef<T> operator[](const Variable<T>& v) {
     return VariableRef<T>(*this, v.slot);
   }
-  template <class T> T operator[](const Variable<T>& v) const { return get(v); }
+  template <class T> T operator[](const Variable<T>& v) const { return get<T>(v.slot); }
 
   Word* words() const { return words_; }
   std::uint32_t base() const { return base_; }
@@ -101,10 +105,10 @@ private:
   std::uint32_t base_;
 };
 
-template <class T> VariableRef<T>::operator T() const { return state_.get(Variable<T>{slot_}); }
+template <class T> VariableRef<T>::operator T() const { return state_.template get<T>(slot_); }
 
 template <class T> VariableRef<T>& VariableRef<T>::operator=(T value) {
-  state_.set(Variable<T>{slot_}, value);
+  state_.template set<T>(slot_, value);
   return *this;
 }
 

@@ -7,13 +7,16 @@
 // Time: in a timed automaton a tick lasts one quantum and discrete steps take no time;
 // in an untimed one each discrete step counts as one unit ("steps").
 
-#include <cstring>
 #include <string>
 #include <vector>
 
 #include "tioa/automaton.hpp"
 
 namespace tioa {
+
+// TIOA are input-enabled (seed 000 §3.1): an input whose precondition is false in an
+// explored state is a model error, not a disabled action.
+[[noreturn]] void throw_input_not_enabled(const ActionSignature& action, const Params& params);
 
 struct StepLabel {
   static constexpr std::uint32_t tick = 0xffffffffu;
@@ -50,12 +53,15 @@ public:
       const Transition& t = transitions[a];
       label.action = a;
       for_each_params(actions[a].params, [&](const Params& p) {
-        if (!t.enabled(from, p))
+        if (!t.enabled(from, p)) {
+          if (actions[a].kind == ActionKind::input)
+            throw_input_not_enabled(actions[a], p);
           return;
+        }
         label.params = p;
         const std::uint32_t choices = t.choice_count(from, p);
         for (std::uint32_t c = 0; c < choices; ++c) {
-          std::memcpy(scratch, state, words_ * sizeof(Word));
+          copy_state(scratch, state);
           State to(scratch, 0);
           t.apply(to, p, c);
           label.choice = c;
@@ -66,7 +72,7 @@ public:
     }
     const Trajectories& traj = automaton_->trajectory();
     if (traj.timed && !(traj.stop_when && traj.stop_when(from))) {
-      std::memcpy(scratch, state, words_ * sizeof(Word));
+      copy_state(scratch, state);
       State to(scratch, 0);
       if (traj.evolve)
         traj.evolve(to);
@@ -86,6 +92,12 @@ public:
   }
 
 private:
+  // States are a few words: a plain loop beats a call to memcpy.
+  void copy_state(Word* to, const Word* from) const {
+    for (std::uint32_t i = 0; i < words_; ++i)
+      to[i] = from[i];
+  }
+
   const Automaton* automaton_;
   std::uint32_t words_;
 };

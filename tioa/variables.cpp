@@ -17,7 +17,12 @@ std::uint8_t bits_for(std::uint64_t codes) {
 } // namespace
 
 Slot VariableInfo::slot() const {
-  return Slot{offset, width, lo, value_codes(), has_bottom, intern(name)};
+  Slot slot = Slot::bits(offset, width);
+  slot.has_bottom = has_bottom;
+  slot.lo = lo;
+  slot.value_codes = value_codes();
+  slot.name = intern(name);
+  return slot;
 }
 
 std::string VariableInfo::render_code(std::uint64_t code) const {
@@ -68,6 +73,21 @@ const char* intern(const std::string& name) {
   static std::unordered_set<std::string> pool; // node-based: element addresses are stable
   std::lock_guard<std::mutex> lock(mutex);
   return pool.insert(name).first->c_str();
+}
+
+} // namespace tioa
+
+#include "tioa/state.hpp"
+
+namespace tioa {
+
+void throw_out_of_domain(const Slot& slot, std::int64_t value) {
+  throw ModelError("value " + std::to_string(value) + " is outside the domain of variable '" +
+                   slot.name + "'");
+}
+
+void throw_read_of_bottom(const Slot& slot) {
+  throw ModelError(std::string("read of variable '") + slot.name + "' while it is ⊥");
 }
 
 } // namespace tioa

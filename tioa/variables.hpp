@@ -20,10 +20,21 @@ enum class VariableKind { boolean, integer, enumeration, clock };
 struct Slot {
   std::uint32_t offset = 0;
   std::uint8_t width = 0;
+  bool has_bottom = false;       // code `value_codes` is ⊥
+  std::uint64_t mask = 0;        // (1 << width) - 1
   std::int64_t lo = 0;
   std::uint64_t value_codes = 0; // number of codes for values (hi - lo + 1)
-  bool has_bottom = false;       // code `value_codes` is ⊥
   const char* name = "";         // interned, for error messages
+
+  // A bare run of `width` bits at `offset` (no domain), for copying raw bits.
+  static Slot bits(std::uint32_t offset, std::uint8_t width) {
+    Slot slot;
+    slot.offset = offset;
+    slot.width = width;
+    slot.mask = width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << width) - 1;
+    slot.value_codes = slot.mask;
+    return slot;
+  }
 };
 
 // A typed handle on a state variable; T is bool, int, or an enum type.
@@ -33,7 +44,9 @@ template <class T> struct Variable {
 
 template <class T> struct VariableArray {
   std::vector<Variable<T>> items;
-  const Variable<T>& operator[](std::size_t i) const { return items.at(i); }
+  // Unchecked, as in the hot loop; at() checks.
+  const Variable<T>& operator[](std::size_t i) const { return items[i]; }
+  const Variable<T>& at(std::size_t i) const { return items.at(i); }
   std::size_t size() const { return items.size(); }
   auto begin() const { return items.begin(); }
   auto end() const { return items.end(); }

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs what tioa-check needs from Debian's packages (as root). Quiet when all is there.
+set -euo pipefail
+packages=(g++ cmake ninja-build python3
+          libboost-graph-dev libboost-dev libeigen3-dev catch2 libfmt-dev libcli11-dev
+          nlohmann-json3-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}"
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
