@@ -75,7 +75,12 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
     ex.stop = reason;
     stopped = true;
   };
-  auto over_state_limit = [&] { return limits.max_states && ex.store.size() > limits.max_states; };
+  // At the state limit, a state that is not stored yet ends the run (incomplete); so a
+  // space of exactly max_states states still finishes.
+  auto at_state_limit = [&](const Word* state, std::uint64_t hash) {
+    return limits.max_states && ex.store.size() >= limits.max_states &&
+           !ex.store.find(state, hash);
+  };
   auto check_time_and_memory = [&] {
     if (limits.max_seconds > 0 && progress.elapsed() > limits.max_seconds)
       stop(StopReason::time_limit);
@@ -88,7 +93,12 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   std::vector<Word> buffer(words + 1, 0);
   try {
     start.enumerate(buffer.data(), 0, [&] {
-      const auto [id, fresh] = ex.store.insert(buffer.data(), hash_state(buffer.data(), words));
+      const std::uint64_t hash = hash_state(buffer.data(), words);
+      if (at_state_limit(buffer.data(), hash)) {
+        stop(StopReason::state_limit);
+        throw StopEnumeration{};
+      }
+      const auto [id, fresh] = ex.store.insert(buffer.data(), hash);
       if (!fresh)
         return;
       ex.parent.push_back(no_parent);
@@ -97,8 +107,6 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
       if (hooks.target && hooks.target(buffer.data())) {
         ex.found = id;
         stop(StopReason::found);
-      } else if (over_state_limit()) {
-        stop(StopReason::state_limit);
       } else if ((ex.start_states & 0xffff) == 0) {
         check_time_and_memory();
       }
@@ -180,6 +188,10 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
       for (std::size_t c = 0; c < w.candidates.size(); ++c) {
         const Candidate& cand = w.candidates[c];
         const Word* succ = w.states.data() + c * words;
+        if (at_state_limit(succ, cand.hash)) {
+          stop(StopReason::state_limit);
+          break;
+        }
         const auto [id, fresh] = ex.store.insert(succ, cand.hash);
         if (hooks.record_edges)
           ex.edge_list.push_back({cand.from, id | timed_bit(cand.duration)});
@@ -190,10 +202,6 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
         if (cand.target) {
           ex.found = id;
           stop(StopReason::found);
-          break;
-        }
-        if (over_state_limit()) {
-          stop(StopReason::state_limit);
           break;
         }
       }

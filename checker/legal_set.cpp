@@ -20,12 +20,17 @@ PropertyResult check_legal_set(const Automaton& system, const StatePredicate& le
 
   PropertyResult r;
   r.kind = "legal-set";
+  r.threads = 1; // one pass over the members of L, in enumeration order
   r.time_unit = generator.timed() ? "quanta" : "steps";
   std::vector<Word> state(words + 1, 0), scratch(words + 1, 0);
   std::optional<std::vector<Word>> bad_from, bad_to;
   std::string limit;
   try {
     members.enumerate(state.data(), 0, [&] {
+      if (options.limits.max_states && r.states >= options.limits.max_states) {
+        limit = "state limit reached";
+        throw StopEnumeration{};
+      }
       ++r.states;
       r.edges += generator.successors(state.data(), scratch.data(),
                                       [&](const Word* succ, const tioa::StepLabel&) {
@@ -41,8 +46,6 @@ PropertyResult check_legal_set(const Automaton& system, const StatePredicate& le
         if (options.limits.max_seconds > 0 && progress.elapsed() > options.limits.max_seconds)
           limit = "time limit reached";
       }
-      if (options.limits.max_states && r.states >= options.limits.max_states)
-        limit = "state limit reached";
       if (!limit.empty())
         throw StopEnumeration{};
     });

@@ -1,19 +1,23 @@
-// Def 3.5 of seed 000: every execution of U(A)||B is in L from time t on.
+// Def 3.5 of seed 000: every execution of U(A)||B is in L from time t on (every
+// state-matched t-suffix is an execution fragment from L, Def 3.2-3.3).
 //
-// Reachable states outside L (L states are not expanded: L is a legal set, checked by
-// its own property) form a graph whose edges last 0 or 1 unit. Tarjan's algorithm finds
-// its strongly connected components in reverse topological order, so the longest time
-// h(S) that an execution can still spend outside L after entering component S is known
-// as soon as S is complete. A component with an internal edge of duration 1 means an
-// execution that stays outside L forever while time passes: a lasso. Zero-time cycles
-// are Zeno executions (time never passes), which Def 3.3 does not count; they are noted.
+// All reachable states and their edges (lasting 0 or 1 unit) form a graph. Tarjan's
+// algorithm finds its strongly connected components in reverse topological order, so
+// for each component S the latest time after entering S at which an execution can still
+// be outside L, last(S), is known as soon as S is complete. A component that holds a
+// state outside L and an internal edge of duration 1 has an execution that returns
+// outside L forever while time passes: a lasso. Zero-time cycles through states outside
+// L are Zeno executions (time never passes), which Def 3.3 does not count; they are
+// noted. L need not be closed here: an execution that enters L and leaves it again is
+// measured to its last state outside L (closure is the legal-set check's job).
 //
-// worst_time = W + 1 where W = max h over start states outside L: the least t (a whole
+// worst_time = W + 1 where W = max last(S) over start states: the least t (a whole
 // number of units) such that every state at time >= t is in L. In steps (untimed
-// models) this is the largest number of steps before an execution first enters L.
+// models) this is the largest number of steps before an execution is in L for good.
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <unordered_map>
 
 #include "checker/checks.hpp"
@@ -54,10 +58,11 @@ Graph build_graph(const Exploration& ex, const StatePredicate& legal) {
 }
 
 struct Components {
-  std::vector<std::uint32_t> of;       // component of each state outside L
-  std::vector<std::uint64_t> longest;  // h per component
-  std::vector<StateId> lasso_members;  // smallest member of each component with a timed cycle
-  std::uint64_t zeno = 0;              // components with only zero-time cycles
+  static constexpr std::int64_t never = -1; // no state outside L is reachable
+  std::vector<std::uint32_t> of;            // component of every state
+  std::vector<std::int64_t> last;           // last(S) per component
+  std::vector<StateId> lasso_members;       // smallest outside-L member of each lasso component
+  std::uint64_t zeno = 0;                   // components with only zero-time cycles outside L
 };
 
 Components strongly_connected(const Graph& g, std::size_t n) {
@@ -65,7 +70,7 @@ Components strongly_connected(const Graph& g, std::size_t n) {
   c.of.assign(n, unvisited);
   std::vector<std::uint32_t> index(n, unvisited), low(n, 0);
   std::vector<std::uint8_t> on_stack(n, 0);
-  std::vector<StateId> stack;
+  std::vector<StateId> stack, members;
   struct Frame {
     StateId v;
     std::uint64_t next;
@@ -74,8 +79,8 @@ Components strongly_connected(const Graph& g, std::size_t n) {
   std::uint32_t counter = 0;
 
   auto finish_component = [&](StateId root) {
-    const std::uint32_t id = static_cast<std::uint32_t>(c.longest.size());
-    std::vector<StateId> members;
+    const std::uint32_t id = static_cast<std::uint32_t>(c.last.size());
+    members.clear();
     StateId w;
     do {
       w = stack.back();
@@ -84,30 +89,35 @@ Components strongly_connected(const Graph& g, std::size_t n) {
       c.of[w] = id;
       members.push_back(w);
     } while (w != root);
-    std::uint64_t longest = 0;
+    std::optional<StateId> outside;
     bool internal = false, internal_timed = false;
-    for (StateId m : members)
+    std::int64_t last = Components::never;
+    for (StateId m : members) {
+      if (!g.legal[m] && (!outside || m < *outside))
+        outside = m;
       for (auto [it, end] = g.out(m); it != end; ++it) {
         const StateId t = *it & ~Edge::timed_bit;
-        const std::uint64_t d = (*it & Edge::timed_bit) ? 1 : 0;
-        if (g.legal[t])
-          continue;
+        const std::int64_t d = (*it & Edge::timed_bit) ? 1 : 0;
         if (c.of[t] == id) {
           internal = true;
           internal_timed = internal_timed || d == 1;
-        } else {
-          longest = std::max(longest, d + c.longest[c.of[t]]);
+        } else if (c.last[c.of[t]] != Components::never) {
+          last = std::max(last, d + c.last[c.of[t]]);
         }
       }
-    c.longest.push_back(longest);
-    if (internal_timed)
-      c.lasso_members.push_back(*std::min_element(members.begin(), members.end()));
-    else if (internal)
-      ++c.zeno;
+    }
+    if (outside) {
+      last = std::max<std::int64_t>(last, 0);
+      if (internal_timed)
+        c.lasso_members.push_back(*outside);
+      else if (internal)
+        ++c.zeno;
+    }
+    c.last.push_back(last);
   };
 
   for (StateId root = 0; root < n; ++root) {
-    if (g.legal[root] || index[root] != unvisited)
+    if (index[root] != unvisited)
       continue;
     calls.push_back({root, g.offsets[root]});
     index[root] = low[root] = counter++;
@@ -117,8 +127,6 @@ Components strongly_connected(const Graph& g, std::size_t n) {
       Frame& f = calls.back();
       if (f.next < g.offsets[f.v + 1]) {
         const StateId t = g.targets[f.next++] & ~Edge::timed_bit;
-        if (g.legal[t])
-          continue;
         if (index[t] == unvisited) {
           index[t] = low[t] = counter++;
           stack.push_back(t);
@@ -140,10 +148,11 @@ Components strongly_connected(const Graph& g, std::size_t n) {
   return c;
 }
 
-// Shortest path (in steps) from `from` to a state satisfying `goal`, inside component
-// `component`; returns the states after `from`.
+// Shortest path (in steps) from `from` to a state satisfying `goal`, inside the
+// component of `from`; returns the states after `from` (empty when `from` is the goal).
 template <class Goal>
-std::vector<StateId> path_inside(const Graph& g, const Components& c, StateId from, Goal&& goal) {
+std::optional<std::vector<StateId>> path_inside(const Graph& g, const Components& c, StateId from,
+                                                Goal&& goal) {
   std::vector<StateId> queue{from};
   std::unordered_map<StateId, StateId> parent{{from, no_parent}};
   for (std::size_t head = 0; head < queue.size(); ++head) {
@@ -157,12 +166,11 @@ std::vector<StateId> path_inside(const Graph& g, const Components& c, StateId fr
     }
     for (auto [it, end] = g.out(v); it != end; ++it) {
       const StateId t = *it & ~Edge::timed_bit;
-      if (g.legal[t] || c.of[t] != c.of[from] || !parent.emplace(t, v).second)
-        continue;
-      queue.push_back(t);
+      if (c.of[t] == c.of[from] && parent.emplace(t, v).second)
+        queue.push_back(t);
     }
   }
-  return {};
+  return std::nullopt;
 }
 
 void append_states(const tioa::SuccessorGenerator& gen, const Exploration& ex, Trace& trace,
@@ -171,71 +179,75 @@ void append_states(const tioa::SuccessorGenerator& gen, const Exploration& ex, T
     extend(gen, trace, ex.store.state(s));
 }
 
-// A stem to the smallest member u of a component with a timed cycle, then a cycle
+// A stem to u, the smallest state outside L of a lasso component, then a cycle
 // u ~> x -(duration 1)-> y ~> u inside the component.
 Trace lasso(const tioa::SuccessorGenerator& gen, const Exploration& ex, const Graph& g,
             const Components& c, StateId u) {
   Trace trace = trace_to(gen, ex, u);
   const std::size_t loop_start = trace.steps.size() - 1;
   StateId y = no_parent; // the end of the timed step
-
   auto timed_internal = [&](StateId v) {
     for (auto [it, end] = g.out(v); it != end; ++it) {
       const StateId t = *it & ~Edge::timed_bit;
-      if ((*it & Edge::timed_bit) && !g.legal[t] && c.of[t] == c.of[u]) {
+      if ((*it & Edge::timed_bit) && c.of[t] == c.of[u]) {
         y = t;
         return true;
       }
     }
     return false;
   };
-  append_states(gen, ex, trace, path_inside(g, c, u, timed_internal));
+  append_states(gen, ex, trace, *path_inside(g, c, u, timed_internal));
   extend(gen, trace, ex.store.state(y));
-  if (y != u)
-    append_states(gen, ex, trace, path_inside(g, c, y, [&](StateId v) { return v == u; }));
+  append_states(gen, ex, trace, *path_inside(g, c, y, [&](StateId v) { return v == u; }));
   trace.loop_start = loop_start;
   return trace;
 }
 
-// The worst case: from the start state with the largest h, keep taking an exit that
-// realises h until h is 0, then a step into L.
+// The worst case: from the start state with the largest last(S), keep taking an exit
+// that realises last(S); when the component itself realises it, go to its state outside
+// L and then into a component from which L is never left again.
 Trace witness(const tioa::SuccessorGenerator& gen, const Exploration& ex, const Graph& g,
               const Components& c, StateId root) {
   Trace trace = trace_to(gen, ex, root);
   StateId cur = root;
   while (true) {
     const std::uint32_t comp = c.of[cur];
-    const std::uint64_t h = c.longest[comp];
-    StateId exit_to = no_parent;
-    bool into_legal = false;
-    auto realises = [&](StateId v) {
-      // Prefer a step into L once nothing more can be gained (h == 0).
-      for (int pass = 0; pass < 2; ++pass)
+    const std::int64_t last = c.last[comp];
+    StateId next = no_parent;
+    auto exit_where = [&](auto&& good) {
+      return [&, good](StateId v) {
         for (auto [it, end] = g.out(v); it != end; ++it) {
           const StateId t = *it & ~Edge::timed_bit;
-          const std::uint64_t d = (*it & Edge::timed_bit) ? 1 : 0;
-          if (pass == 0 && h == 0 && g.legal[t]) {
-            exit_to = t;
-            into_legal = true;
-            return true;
-          }
-          if (pass == 1 && !g.legal[t] && c.of[t] != comp && d + c.longest[c.of[t]] == h) {
-            exit_to = t;
+          const std::int64_t d = (*it & Edge::timed_bit) ? 1 : 0;
+          if (c.of[t] != comp && good(t, d)) {
+            next = t;
             return true;
           }
         }
-      return false;
+        return false;
+      };
     };
-    std::vector<StateId> inside;
-    if (!realises(cur))
-      inside = path_inside(g, c, cur, realises);
-    if (exit_to == no_parent)
-      return trace; // cannot happen when the exploration was complete
-    append_states(gen, ex, trace, inside);
-    extend(gen, trace, ex.store.state(exit_to));
-    if (into_legal)
-      return trace;
-    cur = exit_to;
+    auto realising = exit_where([&](StateId t, std::int64_t d) {
+      return c.last[c.of[t]] != Components::never && d + c.last[c.of[t]] == last;
+    });
+    if (auto path = path_inside(g, c, cur, realising)) {
+      append_states(gen, ex, trace, *path);
+      extend(gen, trace, ex.store.state(next));
+      cur = next;
+      continue;
+    }
+    // This component realises last(S) = 0 itself: visit its state outside L, then leave.
+    if (auto path = path_inside(g, c, cur, [&](StateId v) { return !g.legal[v]; })) {
+      append_states(gen, ex, trace, *path);
+      cur = path->empty() ? cur : path->back();
+    }
+    auto for_good = exit_where(
+        [&](StateId t, std::int64_t) { return c.last[c.of[t]] == Components::never; });
+    if (auto path = path_inside(g, c, cur, for_good)) {
+      append_states(gen, ex, trace, *path);
+      extend(gen, trace, ex.store.state(next));
+    }
+    return trace;
   }
 }
 
@@ -245,7 +257,6 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
                                    const ExploreOptions& options) {
   const tioa::SuccessorGenerator gen(system);
   ExploreHooks hooks;
-  hooks.expand = [&](const Word* s) { return !legal(tioa::State(s, 0)); };
   hooks.record_edges = true;
   const Exploration ex = explore(gen, system.start(), options, hooks);
 
@@ -258,21 +269,32 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
   r.threads = ex.threads;
   r.time_unit = gen.timed() ? "quanta" : "steps";
   if (!ex.complete()) {
-    mark_incomplete(r, ex, "no execution outside L found to last forever so far");
+    mark_incomplete(r, ex, "no execution found to stay outside L so far");
     return r;
   }
-  if (!ex.stuck.empty()) {
-    const char* what = gen.timed() ? "time-lock" : "deadlock";
+  const Graph g = build_graph(ex, legal);
+  const char* stuck_kind = gen.timed() ? "time-lock" : "deadlock";
+  const auto stuck_outside = std::find_if(ex.stuck.begin(), ex.stuck.end(),
+                                          [&](StateId s) { return !g.legal[s]; });
+  if (stuck_outside != ex.stuck.end()) {
     r.verdict = Verdict::violated;
-    r.trace = trace_to(gen, ex, ex.stuck.front());
+    r.trace = trace_to(gen, ex, *stuck_outside);
     r.trace_role = "counterexample";
-    r.trace_kind = what;
-    r.message = std::string("an execution gets stuck outside L (") + what + ": no action" +
+    r.trace_kind = stuck_kind;
+    r.message = std::string("an execution gets stuck outside L (") + stuck_kind + ": no action" +
                 (gen.timed() ? " and no tick" : "") + ")";
     return r;
   }
+  if (!ex.stuck.empty())
+    r.notes.push_back(std::to_string(ex.stuck.size()) + " reachable states in L with no action" +
+                      (gen.timed() ? " and no tick" : "") + " (" + stuck_kind + ")");
+  std::uint64_t escapes = 0;
+  for (const Edge& e : ex.edge_list)
+    escapes += (g.legal[e.from] && !g.legal[e.target()]) ? 1 : 0;
+  if (escapes > 0)
+    r.notes.push_back("L is not closed: " + std::to_string(escapes) +
+                      " reachable steps leave it; times count to the last state outside L");
 
-  const Graph g = build_graph(ex, legal);
   const Components c = strongly_connected(g, ex.store.size());
   if (c.zeno > 0)
     r.notes.push_back(std::to_string(c.zeno) +
@@ -284,7 +306,7 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
     r.trace = lasso(gen, ex, g, c, u);
     r.trace_role = "counterexample";
     r.trace_kind = "lasso";
-    r.message = "an execution stays outside L forever while time passes (lasso: stem " +
+    r.message = "an execution is outside L again and again forever while time passes (lasso: stem " +
                 std::to_string(*r.trace->loop_start) + ", cycle " +
                 std::to_string(r.trace->length() - *r.trace->loop_start) + " steps)";
     return r;
@@ -292,15 +314,16 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
 
   std::optional<StateId> worst_root;
   for (StateId s = 0; s < ex.start_states; ++s)
-    if (!g.legal[s] && (!worst_root || c.longest[c.of[s]] > c.longest[c.of[*worst_root]]))
+    if (c.last[c.of[s]] != Components::never &&
+        (!worst_root || c.last[c.of[s]] > c.last[c.of[*worst_root]]))
       worst_root = s;
   r.verdict = Verdict::holds;
   if (!worst_root) {
     r.worst_time = 0;
-    r.message = "every start state is already in L";
+    r.message = "every execution is in L from its start on";
     return r;
   }
-  const std::uint64_t w = c.longest[c.of[*worst_root]];
+  const std::uint64_t w = static_cast<std::uint64_t>(c.last[c.of[*worst_root]]);
   r.last_time_outside = w;
   r.worst_time = w + 1;
   r.trace = witness(gen, ex, g, c, *worst_root);

@@ -92,26 +92,29 @@ Variable<int> Automaton::clock(const std::string& name, int cap, std::optional<i
   return Variable<int>{declare(std::move(info))};
 }
 
-VariableArray<bool> Automaton::booleans(const std::string& name, std::size_t count,
+VariableArray<bool> Automaton::booleans(const std::string& name, IdRange ids,
                                         std::optional<bool> initial) {
   VariableArray<bool> out;
-  for (std::size_t i = 0; i < count; ++i)
+  out.first = ids.first;
+  for (std::size_t i = ids.first; i < ids.first + ids.count; ++i)
     out.items.push_back(boolean(indexed(name, i), initial));
   return out;
 }
 
-VariableArray<int> Automaton::integers(const std::string& name, std::size_t count, int lo, int hi,
+VariableArray<int> Automaton::integers(const std::string& name, IdRange ids, int lo, int hi,
                                        std::optional<int> initial) {
   VariableArray<int> out;
-  for (std::size_t i = 0; i < count; ++i)
+  out.first = ids.first;
+  for (std::size_t i = ids.first; i < ids.first + ids.count; ++i)
     out.items.push_back(integer(indexed(name, i), lo, hi, initial));
   return out;
 }
 
-VariableArray<int> Automaton::clocks(const std::string& name, std::size_t count, int cap,
+VariableArray<int> Automaton::clocks(const std::string& name, IdRange ids, int cap,
                                      std::optional<int> initial, bool with_bottom) {
   VariableArray<int> out;
-  for (std::size_t i = 0; i < count; ++i)
+  out.first = ids.first;
+  for (std::size_t i = ids.first; i < ids.first + ids.count; ++i)
     out.items.push_back(clock(indexed(name, i), cap, initial, with_bottom));
   return out;
 }

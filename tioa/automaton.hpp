@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "tioa/actions.hpp"
+#include "tioa/errors.hpp"
 #include "tioa/start_set.hpp"
 #include "tioa/state.hpp"
 #include "tioa/variables.hpp"
@@ -102,17 +103,18 @@ public:
       info.initial_code = static_cast<std::uint64_t>(*initial);
     return Variable<E>{declare(std::move(info))};
   }
-  VariableArray<bool> booleans(const std::string& name, std::size_t count,
-                               std::optional<bool> initial);
-  VariableArray<int> integers(const std::string& name, std::size_t count, int lo, int hi,
+  // Arrays (maps from ids to variables): `ids` is a count (ids 0..count-1) or ids(a, b).
+  VariableArray<bool> booleans(const std::string& name, IdRange ids, std::optional<bool> initial);
+  VariableArray<int> integers(const std::string& name, IdRange ids, int lo, int hi,
                               std::optional<int> initial);
-  VariableArray<int> clocks(const std::string& name, std::size_t count, int cap,
+  VariableArray<int> clocks(const std::string& name, IdRange ids, int cap,
                             std::optional<int> initial, bool with_bottom = false);
   template <class E>
-  VariableArray<E> enumerations(const std::string& name, std::size_t count,
+  VariableArray<E> enumerations(const std::string& name, IdRange ids,
                                 const std::vector<std::string>& names, std::optional<E> initial) {
     VariableArray<E> out;
-    for (std::size_t i = 0; i < count; ++i)
+    out.first = ids.first;
+    for (std::size_t i = ids.first; i < ids.first + ids.count; ++i)
       out.items.push_back(enumeration<E>(indexed(name, i), names, initial));
     return out;
   }
@@ -161,5 +163,18 @@ private:
   std::optional<StartSet> start_;
   mutable std::optional<StartSet> declared_start_;
 };
+
+// The handle of a variable by its name, e.g. "receiver.alive" in a composite; for
+// properties written outside the automaton. A ModelError when there is none, or when a
+// boolean is asked for a variable that is not one (or the other way round).
+template <class T> Variable<T> find_variable(const Automaton& automaton, const std::string& name) {
+  const VariableInfo* info = automaton.layout().find(name);
+  if (!info)
+    throw ModelError(automaton.name() + " has no variable '" + name + "'");
+  if (std::is_same_v<T, bool> != (info->kind == VariableKind::boolean))
+    throw ModelError("variable '" + name + "' of " + automaton.name() + " is " +
+                     (info->kind == VariableKind::boolean ? "" : "not ") + "a boolean");
+  return Variable<T>{info->slot()};
+}
 
 } // namespace tioa

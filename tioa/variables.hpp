@@ -42,11 +42,25 @@ template <class T> struct Variable {
   Slot slot;
 };
 
+// The ids an array of variables is indexed by: 0..count-1 by default, or the ids the
+// paper uses (ids(1, n) for processes 1..N), so that `loc[p]` reads as in the figure.
+struct IdRange {
+  std::size_t first = 0;
+  std::size_t count = 0;
+  IdRange(std::size_t count) : count(count) {} // NOLINT: 0..count-1, implicitly
+  IdRange(std::size_t first, std::size_t count) : first(first), count(count) {}
+};
+inline IdRange ids(std::size_t first, std::size_t last) {
+  return IdRange(first, last >= first ? last - first + 1 : 0);
+}
+
 template <class T> struct VariableArray {
   std::vector<Variable<T>> items;
+  std::size_t first = 0; // the id of items[0]
+
   // Unchecked, as in the hot loop; at() checks.
-  const Variable<T>& operator[](std::size_t i) const { return items[i]; }
-  const Variable<T>& at(std::size_t i) const { return items.at(i); }
+  const Variable<T>& operator[](std::size_t id) const { return items[id - first]; }
+  const Variable<T>& at(std::size_t id) const { return items.at(id - first); }
   std::size_t size() const { return items.size(); }
   auto begin() const { return items.begin(); }
   auto end() const { return items.end(); }

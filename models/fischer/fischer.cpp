@@ -13,53 +13,53 @@ enum class Loc { idle, req, wait, cs };
 
 ModelInstance build_fischer(int n, int a, int b) {
   const int cmax = std::max(a, b) + 1;
-  const std::size_t count = static_cast<std::size_t>(n);
   tioa::Automaton f("fischer");
-  // State: shared id in 0..N (0 = free); per process p = 1..N (index p-1) a location and
-  // an integer clock in 0..CMAX. One start state: id = 0, all IDLE, all clocks 0.
+  // State: shared id in 0..N (0 = free); per process p = 1..N a location and an integer
+  // clock in 0..CMAX. One start state: id = 0, every loc[p] = IDLE, every c[p] = 0.
+  const auto processes = tioa::ids(1, static_cast<std::size_t>(n));
   const auto id = f.integer("id", 0, n, 0);
-  const auto loc = f.enumerations<Loc>("loc", count, {"IDLE", "REQ", "WAIT", "CS"}, Loc::idle);
-  const auto c = f.clocks("c", count, cmax, 0);
+  const auto loc = f.enumerations<Loc>("loc", processes, {"IDLE", "REQ", "WAIT", "CS"}, Loc::idle);
+  const auto c = f.clocks("c", processes, cmax, 0);
   const tioa::ParamRange process{"p", 1, n};
 
-  // | try   | loc[p] == IDLE && id == 0           | loc[p] := REQ;  c[p] := 0          |
+  // | try   | loc[p] == IDLE && id == 0              | loc[p] := REQ;  c[p] := 0          |
   f.internal("try", {process})
-      .pre([=](const State& s, const Params& x) { return s[loc[x[0] - 1]] == Loc::idle && s[id] == 0; })
+      .pre([=](const State& s, const Params& x) { return s[loc[x[0]]] == Loc::idle && s[id] == 0; })
       .eff([=](State& s, const Params& x) {
-        s[loc[x[0] - 1]] = Loc::req;
-        s[c[x[0] - 1]] = 0;
+        s[loc[x[0]]] = Loc::req;
+        s[c[x[0]]] = 0;
       });
-  // | set   | loc[p] == REQ                       | loc[p] := WAIT; id := p; c[p] := 0 |
+  // | set   | loc[p] == REQ                          | loc[p] := WAIT; id := p; c[p] := 0 |
   f.internal("set", {process})
-      .pre([=](const State& s, const Params& x) { return s[loc[x[0] - 1]] == Loc::req; })
+      .pre([=](const State& s, const Params& x) { return s[loc[x[0]]] == Loc::req; })
       .eff([=](State& s, const Params& x) {
-        s[loc[x[0] - 1]] = Loc::wait;
+        s[loc[x[0]]] = Loc::wait;
         s[id] = x[0];
-        s[c[x[0] - 1]] = 0;
+        s[c[x[0]]] = 0;
       });
-  // | enter | loc[p] == WAIT && c[p] >= B && id == p | loc[p] := CS; c[p] := 0          |
+  // | enter | loc[p] == WAIT && c[p] >= B && id == p | loc[p] := CS;   c[p] := 0          |
   f.internal("enter", {process})
       .pre([=](const State& s, const Params& x) {
-        return s[loc[x[0] - 1]] == Loc::wait && s[c[x[0] - 1]] >= b && s[id] == x[0];
+        return s[loc[x[0]]] == Loc::wait && s[c[x[0]]] >= b && s[id] == x[0];
       })
       .eff([=](State& s, const Params& x) {
-        s[loc[x[0] - 1]] = Loc::cs;
-        s[c[x[0] - 1]] = 0;
+        s[loc[x[0]]] = Loc::cs;
+        s[c[x[0]]] = 0;
       });
-  // | fail  | loc[p] == WAIT && c[p] >= B && id != p | loc[p] := IDLE; c[p] := 0        |
+  // | fail  | loc[p] == WAIT && c[p] >= B && id != p | loc[p] := IDLE; c[p] := 0          |
   f.internal("fail", {process})
       .pre([=](const State& s, const Params& x) {
-        return s[loc[x[0] - 1]] == Loc::wait && s[c[x[0] - 1]] >= b && s[id] != x[0];
+        return s[loc[x[0]]] == Loc::wait && s[c[x[0]]] >= b && s[id] != x[0];
       })
       .eff([=](State& s, const Params& x) {
-        s[loc[x[0] - 1]] = Loc::idle;
-        s[c[x[0] - 1]] = 0;
+        s[loc[x[0]]] = Loc::idle;
+        s[c[x[0]]] = 0;
       });
-  // | exit  | loc[p] == CS                        | loc[p] := IDLE; id := 0            |
+  // | exit  | loc[p] == CS                           | loc[p] := IDLE; id := 0            |
   f.internal("exit", {process})
-      .pre([=](const State& s, const Params& x) { return s[loc[x[0] - 1]] == Loc::cs; })
+      .pre([=](const State& s, const Params& x) { return s[loc[x[0]]] == Loc::cs; })
       .eff([=](State& s, const Params& x) {
-        s[loc[x[0] - 1]] = Loc::idle;
+        s[loc[x[0]]] = Loc::idle;
         s[id] = 0;
       });
 
@@ -67,12 +67,12 @@ ModelInstance build_fischer(int n, int a, int b) {
   // advances the clocks of REQ and WAIT processes, saturating at CMAX.
   f.trajectories(
       [=](State& s) {
-        for (std::size_t p = 0; p < count; ++p)
+        for (int p = 1; p <= n; ++p)
           if (s[loc[p]] == Loc::req || s[loc[p]] == Loc::wait)
             s.advance(c[p]);
       },
       [=](const State& s) {
-        for (std::size_t p = 0; p < count; ++p)
+        for (int p = 1; p <= n; ++p)
           if (s[loc[p]] == Loc::req && s[c[p]] >= a)
             return true;
         return false;

@@ -70,7 +70,7 @@ ModelDefinition token_ring_definition() {
     for (int i = 0; i < p.at("N"); ++i)
       states *= static_cast<double>(p.at("K"));
     if (states > 4e9)
-      return "K^N = " + std::to_string(static_cast<long double>(states)) +
+      return "K^N = " + std::to_string(p.at("K")) + "^" + std::to_string(p.at("N")) +
              " states is more than the 2^32 the checker can store";
     return std::nullopt;
   };

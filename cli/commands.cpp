@@ -1,0 +1,103 @@
+#include "cli/commands.hpp"
+
+#include <iostream>
+
+#include "cli/exit_status.hpp"
+#include "cli/model_run.hpp"
+#include "cli/output.hpp"
+#include "cli/report_junit.hpp"
+#include "cli/report_text.hpp"
+#include "tioa/operators.hpp"
+
+namespace cli {
+
+namespace {
+
+struct Built {
+  const models::ModelDefinition* definition;
+  models::ParamValues values;
+  models::ModelInstance instance;
+};
+
+Built build(const ModelRequest& request) {
+  const models::ModelDefinition& definition = models::find_model(request.model);
+  models::ParamValues values = models::resolve_params(definition, request.param_settings);
+  models::ModelInstance instance = definition.build(values);
+  return {&definition, std::move(values), std::move(instance)};
+}
+
+ModelRun start_run(const Built& built, const tioa::Automaton& system) {
+  ModelRun run;
+  run.model = built.definition->name;
+  run.params = ordered_params(*built.definition, built.values);
+  run.quantum = built.instance.quantum;
+  run.layout = system.layout();
+  return run;
+}
+
+// Prints the report the settings ask for, writes the JUnit file, returns the exit code.
+int report(const ModelRun& run, const RunSettings& settings, std::optional<std::ofstream>& junit) {
+  if (settings.json)
+    print_json(run_json(run, settings.trace != TraceMode::none));
+  else
+    print_text_report(std::cout, run, settings.trace);
+  if (junit) {
+    write_junit(*junit, {junit_suite(run, settings.trace)});
+    junit->close();
+    if (!*junit)
+      throw models::UsageError("cannot write the report file '" + settings.junit_path + "'");
+  }
+  return exit_status(run.results);
+}
+
+} // namespace
+
+int command_check(const ModelRequest& request, const RunSettings& settings) {
+  const Built built = build(request);
+  const auto properties = select_properties(built.instance, request.model, request.properties);
+  auto junit = open_report_file(settings.junit_path);
+  ModelRun run = start_run(built, built.instance.system);
+  const checker::ExploreOptions options = explore_options(settings);
+  for (const checker::Property* property : properties)
+    run.results.push_back(checker::run_property(built.instance.system, *property, options));
+  return report(run, settings, junit);
+}
+
+int command_explore(const ModelRequest& request, const std::string& from,
+                    const RunSettings& settings) {
+  if (from != "arbitrary" && from != "start")
+    throw models::UsageError("--from must be 'arbitrary' or 'start', not '" + from + "'");
+  const Built built = build(request);
+  std::vector<const checker::Property*> properties;
+  for (const checker::Property* p :
+       select_properties(built.instance, request.model, request.properties)) {
+    if (p->kind == checker::PropertyKind::invariant)
+      properties.push_back(p);
+    else if (!request.properties.empty())
+      throw models::UsageError("explore checks invariants only: property '" + p->name +
+                               "' of model '" + request.model + "' is a " +
+                               checker::to_string(p->kind) + " property (use check)");
+  }
+  const tioa::Automaton system =
+      from == "arbitrary" ? tioa::U(built.instance.system) : built.instance.system;
+  checker::Property no_deadlock;
+  no_deadlock.kind = checker::PropertyKind::deadlock;
+  if (system.timed()) {
+    no_deadlock.name = "no-timelock";
+    no_deadlock.description = "no reachable state where neither an action nor a tick is possible";
+  } else {
+    no_deadlock.name = "no-deadlock";
+    no_deadlock.description = "no reachable state where no action is enabled";
+  }
+
+  auto junit = open_report_file(settings.junit_path);
+  ModelRun run = start_run(built, system);
+  run.from = from;
+  const checker::ExploreOptions options = explore_options(settings);
+  for (const checker::Property* property : properties)
+    run.results.push_back(checker::run_property(system, *property, options));
+  run.results.push_back(checker::run_property(system, no_deadlock, options));
+  return report(run, settings, junit);
+}
+
+} // namespace cli

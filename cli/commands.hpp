@@ -1,0 +1,25 @@
+#pragma once
+// The four commands of tioa-check. Each returns the process exit code (exit_status.hpp)
+// and throws models::UsageError or tioa::ModelError on bad input.
+
+#include <string>
+
+#include "cli/settings.hpp"
+
+namespace cli {
+
+// Every model with its description, parameters and properties.
+int command_list(bool json);
+
+// The model's properties (or the requested ones) on the instance the parameters build.
+int command_check(const ModelRequest& request, const RunSettings& settings);
+
+// Counterexample search: the model's invariants and a deadlock / time-lock check, from
+// arbitrary states (`from` = "arbitrary": U(A)) or from the model's start states ("start").
+int command_explore(const ModelRequest& request, const std::string& from,
+                    const RunSettings& settings);
+
+// Every suite entry of every model against its expected verdict.
+int command_suite(const RunSettings& settings);
+
+} // namespace cli

@@ -1,0 +1,188 @@
+// tioa-check: the command line. Parses with CLI11, runs one command, and turns every
+// error on bad input into one line on stderr and exit code 2.
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <new>
+#include <string>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/exit_status.hpp"
+#include "models/registry.hpp"
+#include "tioa/errors.hpp"
+
+namespace {
+
+constexpr const char* exit_codes_help =
+    "Exit codes: 0 every property holds (suite: every verdict as expected), 1 some property "
+    "is violated (suite: some verdict not as expected), 2 usage or input error, 3 some check "
+    "hit a limit (incomplete) and none is violated.";
+
+int fail(const std::string& message) {
+  std::string line = message;
+  for (char& c : line)
+    if (c == '\n' || c == '\r')
+      c = ' ';
+  std::cerr << "tioa-check: error: " << line << std::endl;
+  return cli::usage_error;
+}
+
+// A whole number >= 0 written in decimal digits (CLI11 would wrap "-1" into an unsigned).
+const CLI::Validator whole_number(
+    [](const std::string& text) {
+      if (text.empty() || text.size() > 15 ||
+          text.find_first_not_of("0123456789") != std::string::npos)
+        return std::string("'" + text + "' is not a whole number from 0 to 10^15");
+      return std::string();
+    },
+    "N>=0", "whole_number");
+
+// A finite number of seconds >= 0.
+const CLI::Validator seconds(
+    [](const std::string& text) {
+      double value = 0;
+      std::size_t end = 0;
+      try {
+        value = std::stod(text, &end);
+      } catch (const std::exception&) {
+        end = 0;
+      }
+      if (end == 0 || end != text.size() || !std::isfinite(value) || value < 0)
+        return std::string("'" + text + "' is not a number of seconds >= 0");
+      return std::string();
+    },
+    "S>=0", "seconds");
+
+struct Limits {
+  std::uint64_t max_states = 0;
+  double max_seconds = 0;
+  std::uint64_t max_memory_mib = 0;
+};
+
+void add_model_options(CLI::App* command, cli::ModelRequest& request) {
+  command->add_option("MODEL", request.model, "the model (see tioa-check list)")->required();
+  command
+      ->add_option("-p,--param", request.param_settings,
+                   "a parameter setting name=value (repeatable; or name=value,name=value)")
+      ->type_name("NAME=VALUE")
+      ->allow_extra_args(false)
+      ->delimiter(',');
+  command->add_option("--prop", request.properties, "a property to check (repeatable)")
+      ->type_name("NAME")
+      ->allow_extra_args(false)
+      ->delimiter(',');
+}
+
+void add_run_options(CLI::App* command, cli::RunSettings& settings, Limits& limits,
+                     std::string& trace, bool with_trace) {
+  command->add_flag("--json", settings.json, "print one JSON object on stdout");
+  command->add_option("--junit", settings.junit_path, "also write a JUnit XML report to FILE")
+      ->type_name("FILE");
+  command->add_option("-j,--threads", settings.threads, "worker threads (default: all cores)")
+      ->type_name("N")
+      ->check(CLI::Range(1u, 4096u));
+  command->add_option("--max-states", limits.max_states, "stop after N states (0: no limit)")
+      ->type_name("N")
+      ->check(whole_number);
+  command->add_option("--max-seconds", limits.max_seconds, "stop after S seconds (0: no limit)")
+      ->type_name("S")
+      ->check(seconds);
+  command
+      ->add_option("--max-memory", limits.max_memory_mib,
+                   "stop when the state store exceeds MiB mebibytes (0: no limit)")
+      ->type_name("MiB")
+      ->check(whole_number);
+  if (with_trace)
+    command->add_option("--trace", trace, "how to show traces: text, json or none")
+        ->type_name("MODE")
+        ->check(CLI::IsMember({"text", "json", "none"}));
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"tioa-check: an explicit-state checker for timed I/O automata", "tioa-check"};
+  app.footer(exit_codes_help);
+  app.set_version_flag("--version", TIOA_CHECK_VERSION);
+  app.require_subcommand(0, 1);
+
+  cli::RunSettings settings;
+  settings.threads = std::max(1u, std::thread::hardware_concurrency());
+  cli::ModelRequest request;
+  Limits limits;
+  std::string trace = "text";
+  std::string from = "arbitrary";
+  bool list_json = false;
+
+  CLI::App* list = app.add_subcommand("list", "list the models, their parameters and properties");
+  list->add_flag("--json", list_json, "print one JSON object on stdout");
+
+  CLI::App* check = app.add_subcommand("check", "check a model's properties");
+  add_model_options(check, request);
+  add_run_options(check, settings, limits, trace, true);
+
+  CLI::App* explore = app.add_subcommand(
+      "explore", "search counterexamples: invariants and deadlock / time-lock, from arbitrary "
+                 "states (U(A)) or from the start states");
+  add_model_options(explore, request);
+  explore->add_option("--from", from, "arbitrary (every valuation is a start state) or start")
+      ->type_name("FROM")
+      ->check(CLI::IsMember({"arbitrary", "start"}));
+  add_run_options(explore, settings, limits, trace, true);
+
+  CLI::App* suite = app.add_subcommand(
+      "suite", "run every model's suite against the expected verdicts (the CI run)");
+  add_run_options(suite, settings, limits, trace, false);
+
+  for (CLI::App* command : {list, check, explore, suite})
+    command->footer(exit_codes_help);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) { // --help, --help-all, --version
+    return app.exit(e);
+  } catch (const CLI::ExtrasError& e) {
+    if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-')
+      return fail(std::string("unknown command '") + argv[1] +
+                  "' (commands: list, check, explore, suite)");
+    return fail(std::string(e.what()) + " (see tioa-check --help)");
+  } catch (const CLI::ParseError& e) {
+    return fail(std::string(e.what()) + " (see tioa-check --help)");
+  }
+
+  if (app.get_subcommands().empty()) {
+    std::cout << app.help();
+    return fail("a command is required: list, check, explore or suite");
+  }
+
+  settings.limits.max_states = limits.max_states;
+  settings.limits.max_seconds = limits.max_seconds;
+  if (limits.max_memory_mib > (std::numeric_limits<std::uint64_t>::max() >> 20))
+    return fail("--max-memory: " + std::to_string(limits.max_memory_mib) + " MiB is too large");
+  settings.limits.max_memory_bytes = limits.max_memory_mib << 20;
+  settings.trace = trace == "json"   ? cli::TraceMode::json
+                   : trace == "none" ? cli::TraceMode::none
+                                     : cli::TraceMode::text;
+
+  try {
+    if (list->parsed())
+      return cli::command_list(list_json);
+    if (check->parsed())
+      return cli::command_check(request, settings);
+    if (explore->parsed())
+      return cli::command_explore(request, from, settings);
+    return cli::command_suite(settings);
+  } catch (const models::UsageError& e) {
+    return fail(e.what());
+  } catch (const tioa::ModelError& e) {
+    return fail(std::string("model error: ") + e.what());
+  } catch (const std::bad_alloc&) {
+    return fail("out of memory (bound the run with --max-memory or --max-states)");
+  } catch (const std::exception& e) {
+    return fail(std::string("internal error: ") + e.what());
+  }
+}

@@ -1,0 +1,56 @@
+#include "cli/model_run.hpp"
+
+#include <algorithm>
+
+namespace cli {
+
+OrderedParams ordered_params(const models::ModelDefinition& model,
+                             const models::ParamValues& values) {
+  OrderedParams out;
+  for (const auto& spec : model.params)
+    if (const auto it = values.find(spec.name); it != values.end())
+      out.emplace_back(spec.name, it->second);
+  return out;
+}
+
+std::vector<std::string> param_settings(const models::ParamValues& values) {
+  std::vector<std::string> settings;
+  for (const auto& [name, value] : values)
+    settings.push_back(name + "=" + std::to_string(value));
+  return settings;
+}
+
+checker::ExploreOptions explore_options(const RunSettings& settings) {
+  checker::ExploreOptions options;
+  options.limits = settings.limits;
+  options.threads = settings.threads;
+  options.progress = true; // drawn only on a terminal, and only for runs longer than 1 s
+  return options;
+}
+
+std::vector<const checker::Property*> select_properties(const models::ModelInstance& instance,
+                                                        const std::string& model,
+                                                        const std::vector<std::string>& names) {
+  std::vector<const checker::Property*> selected;
+  if (names.empty()) {
+    for (const auto& p : instance.properties)
+      selected.push_back(&p);
+    return selected;
+  }
+  for (const auto& name : names) {
+    const auto it = std::find_if(instance.properties.begin(), instance.properties.end(),
+                                 [&](const checker::Property& p) { return p.name == name; });
+    if (it == instance.properties.end()) {
+      std::string known;
+      for (const auto& p : instance.properties)
+        known += (known.empty() ? "" : ", ") + p.name;
+      throw models::UsageError("model '" + model + "' has no property '" + name +
+                               "' (it has: " + known + ")");
+    }
+    if (std::find(selected.begin(), selected.end(), &*it) == selected.end())
+      selected.push_back(&*it);
+  }
+  return selected;
+}
+
+} // namespace cli

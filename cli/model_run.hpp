@@ -1,0 +1,43 @@
+#pragma once
+// One model instance and the results of the properties run on it: what every report
+// (text, JSON, JUnit) is made from.
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "checker/property.hpp"
+#include "cli/settings.hpp"
+#include "models/registry.hpp"
+#include "tioa/variables.hpp"
+
+namespace cli {
+
+// Parameter values in the model's declaration order.
+using OrderedParams = std::vector<std::pair<std::string, std::int64_t>>;
+
+struct ModelRun {
+  std::string model;
+  OrderedParams params;
+  std::string quantum; // what one tick is; empty when the model is untimed
+  std::string from;    // explore: "arbitrary" or "start"; empty otherwise
+  tioa::StateLayout layout;
+  std::vector<checker::PropertyResult> results;
+};
+
+OrderedParams ordered_params(const models::ModelDefinition& model,
+                             const models::ParamValues& values);
+
+// "name=value" settings for resolve_params, from a suite entry's values.
+std::vector<std::string> param_settings(const models::ParamValues& values);
+
+checker::ExploreOptions explore_options(const RunSettings& settings);
+
+// The properties named in `names` (every property when empty), in the order asked, each
+// once; a UsageError names an unknown one and lists the known ones.
+std::vector<const checker::Property*> select_properties(const models::ModelInstance& instance,
+                                                        const std::string& model,
+                                                        const std::vector<std::string>& names);
+
+} // namespace cli

@@ -1,0 +1,112 @@
+#include "cli/report_json.hpp"
+
+#include <charconv>
+
+#include "checker/trace.hpp"
+#include "cli/time_note.hpp"
+
+namespace cli {
+
+namespace {
+
+// A variable's value as JSON: numbers for integers and clocks, true/false for booleans,
+// strings for enumerations and ⊥.
+Json value_json(const tioa::VariableInfo& variable, const std::string& text) {
+  switch (variable.kind) {
+  case tioa::VariableKind::boolean:
+    if (text == "true" || text == "false")
+      return text == "true";
+    break;
+  case tioa::VariableKind::integer:
+  case tioa::VariableKind::clock: {
+    std::int64_t number = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
+    if (error == std::errc() && end == text.data() + text.size())
+      return number;
+    break;
+  }
+  default:
+    break;
+  }
+  return text;
+}
+
+} // namespace
+
+Json trace_json(const tioa::StateLayout& layout, const checker::PropertyResult& result) {
+  const checker::Trace& trace = *result.trace;
+  Json steps = Json::array();
+  const auto& variables = layout.variables();
+  for (const auto& step : trace.steps) {
+    Json state = Json::object();
+    const auto rendered = checker::render_state(layout, step.state.data());
+    for (std::size_t v = 0; v < rendered.size(); ++v)
+      state[rendered[v].first] = value_json(variables[v], rendered[v].second);
+    Json item;
+    item["action"] = step.action.empty() ? Json(nullptr) : Json(step.action);
+    item["time"] = step.time;
+    item["state"] = std::move(state);
+    steps.push_back(std::move(item));
+  }
+  Json out;
+  out["role"] = result.trace_role;
+  out["kind"] = result.trace_kind;
+  out["loop_start"] = trace.loop_start ? Json(*trace.loop_start) : Json(nullptr);
+  out["length"] = trace.length();
+  out["steps"] = std::move(steps);
+  return out;
+}
+
+Json property_json(const ModelRun& run, const checker::PropertyResult& r, bool with_trace) {
+  Json out;
+  out["name"] = r.name;
+  out["kind"] = r.kind;
+  out["description"] = r.description;
+  out["verdict"] = checker::to_string(r.verdict);
+  out["message"] = r.message;
+  out["states"] = r.states;
+  out["edges"] = r.edges;
+  out["depth"] = r.depth;
+  out["seconds"] = r.seconds;
+  out["threads"] = r.threads;
+  out["time_unit"] = r.time_unit;
+  const bool timing_kind = r.kind == "stabilisation" || r.kind == "transitivity";
+  if (timing_kind && r.worst_time)
+    out["worst_time"] = *r.worst_time;
+  if (timing_kind && r.last_time_outside)
+    out["last_time_outside"] = *r.last_time_outside;
+  if (!run.quantum.empty())
+    out["time_note"] = time_note(run.quantum);
+  out["notes"] = r.notes;
+  Json figures = Json::object();
+  for (const auto& [name, value] : r.figures)
+    figures[name] = value;
+  out["figures"] = std::move(figures);
+  if (with_trace && r.trace)
+    out["trace"] = trace_json(run.layout, r);
+  return out;
+}
+
+Json params_json(const OrderedParams& params) {
+  Json out = Json::object();
+  for (const auto& [name, value] : params)
+    out[name] = value;
+  return out;
+}
+
+Json run_json(const ModelRun& run, bool with_trace) {
+  Json out;
+  out["model"] = run.model;
+  out["params"] = params_json(run.params);
+  if (!run.from.empty())
+    out["from"] = run.from;
+  if (!run.quantum.empty())
+    out["quantum"] = run.quantum;
+  Json properties = Json::array();
+  for (const auto& r : run.results)
+    properties.push_back(property_json(run, r, with_trace));
+  out["properties"] = std::move(properties);
+  return out;
+}
+
+} // namespace cli

@@ -1,0 +1,26 @@
+#pragma once
+// The machine-readable report (--json): one JSON object on stdout.
+
+#include <nlohmann/json.hpp>
+
+#include "checker/result.hpp"
+#include "cli/model_run.hpp"
+
+namespace cli {
+
+using Json = nlohmann::ordered_json; // keys in the order written
+
+// {"role", "kind", "loop_start" (or null), "length", "steps": [{"action" (null for the
+// first state), "time", "state": {variable: value}}]}
+Json trace_json(const tioa::StateLayout& layout, const checker::PropertyResult& result);
+
+// One property: name, kind, description, verdict, message, figures of the run, and the
+// trace when there is one and `with_trace`.
+Json property_json(const ModelRun& run, const checker::PropertyResult& result, bool with_trace);
+
+Json params_json(const OrderedParams& params);
+
+// {"model", "params", ("from",) "properties": [...]}
+Json run_json(const ModelRun& run, bool with_trace);
+
+} // namespace cli

@@ -1,0 +1,128 @@
+#include "cli/report_junit.hpp"
+
+#include <ostream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "cli/report_text.hpp"
+
+namespace cli {
+
+std::string xml_escape(const std::string& text, bool attribute) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    switch (c) {
+    case '&':
+      out += "&amp;";
+      break;
+    case '<':
+      out += "&lt;";
+      break;
+    case '>':
+      out += "&gt;";
+      break;
+    case '"':
+      out += "&quot;";
+      break;
+    case '\'':
+      out += "&apos;";
+      break;
+    case '\n':
+      out += attribute ? "&#10;" : "\n";
+      break;
+    case '\t':
+      out += attribute ? "&#9;" : "\t";
+      break;
+    case '\r':
+      out += "&#13;";
+      break;
+    default:
+      out += (byte < 0x20 || byte == 0x7f) ? '?' : c; // not allowed in XML 1.0
+    }
+  }
+  return out;
+}
+
+void write_junit(std::ostream& out, const std::vector<JunitSuite>& suites) {
+  std::size_t total = 0, failures = 0, skipped = 0;
+  double seconds = 0;
+  for (const auto& suite : suites)
+    for (const auto& c : suite.cases) {
+      ++total;
+      failures += c.outcome == JunitCase::Outcome::failed;
+      skipped += c.outcome == JunitCase::Outcome::skipped;
+      seconds += c.seconds;
+    }
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out << fmt::format(
+      "<testsuites name=\"tioa-check\" tests=\"{}\" failures=\"{}\" errors=\"0\" skipped=\"{}\" "
+      "time=\"{:.3f}\">\n",
+      total, failures, skipped, seconds);
+  for (const auto& suite : suites) {
+    std::size_t suite_failures = 0, suite_skipped = 0;
+    double suite_seconds = 0;
+    for (const auto& c : suite.cases) {
+      suite_failures += c.outcome == JunitCase::Outcome::failed;
+      suite_skipped += c.outcome == JunitCase::Outcome::skipped;
+      suite_seconds += c.seconds;
+    }
+    out << fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"0\" "
+                       "skipped=\"{}\" time=\"{:.3f}\">\n",
+                       xml_escape(suite.name), suite.cases.size(), suite_failures, suite_skipped,
+                       suite_seconds);
+    if (!suite.properties.empty()) {
+      out << "    <properties>\n";
+      for (const auto& [name, value] : suite.properties)
+        out << "      <property name=\"" << xml_escape(name) << "\" value=\"" << xml_escape(value)
+            << "\"/>\n";
+      out << "    </properties>\n";
+    }
+    for (const auto& c : suite.cases) {
+      out << fmt::format("    <testcase name=\"{}\" classname=\"{}\" time=\"{:.3f}\"",
+                         xml_escape(c.name), xml_escape(suite.name), c.seconds);
+      if (c.outcome == JunitCase::Outcome::passed) {
+        out << "/>\n";
+        continue;
+      }
+      out << ">\n";
+      if (c.outcome == JunitCase::Outcome::failed)
+        out << "      <failure message=\"" << xml_escape(c.message) << "\">"
+            << xml_escape(c.details, false) << "</failure>\n";
+      else
+        out << "      <skipped message=\"" << xml_escape(c.message) << "\"/>\n";
+      out << "    </testcase>\n";
+    }
+    out << "  </testsuite>\n";
+  }
+  out << "</testsuites>\n";
+}
+
+JunitSuite junit_suite(const ModelRun& run, TraceMode trace) {
+  JunitSuite suite;
+  suite.name = run.model;
+  for (const auto& [name, value] : run.params)
+    suite.properties.emplace_back("param." + name, std::to_string(value));
+  if (!run.from.empty())
+    suite.properties.emplace_back("from", run.from);
+  for (const auto& r : run.results) {
+    JunitCase c;
+    c.name = r.name;
+    c.seconds = r.seconds;
+    c.message = r.message;
+    if (r.verdict == checker::Verdict::violated) {
+      c.outcome = JunitCase::Outcome::failed;
+      std::ostringstream details;
+      print_property_block(details, run, r, trace);
+      c.details = details.str();
+    } else if (r.verdict == checker::Verdict::incomplete) {
+      c.outcome = JunitCase::Outcome::skipped;
+    }
+    suite.cases.push_back(std::move(c));
+  }
+  return suite;
+}
+
+} // namespace cli

@@ -1,0 +1,32 @@
+#pragma once
+// What the command line asked for, shared by the commands: how to run the checks and how
+// to report them.
+
+#include <string>
+#include <vector>
+
+#include "checker/options.hpp"
+
+namespace cli {
+
+// How a trace is shown: as a numbered list in the text report, as a JSON object (also in
+// the text report), or not at all. A --json report carries the trace unless `none`.
+enum class TraceMode { text, json, none };
+
+struct RunSettings {
+  unsigned threads = 1;
+  checker::Limits limits;
+  bool json = false;
+  std::string junit_path; // empty: no JUnit file
+  TraceMode trace = TraceMode::text;
+};
+
+// What `check` and `explore` run: a model, its parameter settings ("name=value") and the
+// properties asked for (empty: the command's default set).
+struct ModelRequest {
+  std::string model;
+  std::vector<std::string> param_settings;
+  std::vector<std::string> properties;
+};
+
+} // namespace cli

@@ -1,0 +1,152 @@
+// The suite: every SuiteEntry of every model, checked against its expected verdict. This
+// is the run CI pipelines call after a model change.
+
+#include <chrono>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "cli/exit_status.hpp"
+#include "cli/model_run.hpp"
+#include "cli/output.hpp"
+#include "cli/report_junit.hpp"
+#include "cli/report_text.hpp"
+
+namespace cli {
+
+namespace {
+
+struct SuiteRow {
+  const models::ModelDefinition* definition = nullptr;
+  const models::SuiteEntry* entry = nullptr;
+  models::ParamValues values;
+  ModelRun run; // one result: this entry's property
+
+  const checker::PropertyResult& result() const { return run.results.front(); }
+  bool as_expected() const { return result().verdict == entry->expected; }
+};
+
+struct Columns {
+  std::size_t model = 5, params = 6, property = 8;
+};
+
+void print_header(const Columns& c) {
+  std::cout << fmt::format(
+      "{:<{}}  {:<{}}  {:<{}}  {:<10}  {:<10}  {:>10}  {:>12}  {:>14}  {:>8}\n", "model", c.model,
+      "params", c.params, "property", c.property, "verdict", "expected", "states", "edges",
+      "worst time", "seconds");
+}
+
+void print_row(const Columns& c, const SuiteRow& row) {
+  const checker::PropertyResult& r = row.result();
+  std::cout << fmt::format(
+      "{:<{}}  {:<{}}  {:<{}}  {:<10}  {:<10}  {:>10}  {:>12}  {:>14}  {:>8.3f}{}\n", row.run.model,
+      c.model, format_params(row.run.params), c.params, r.name, c.property,
+      checker::to_string(r.verdict), checker::to_string(row.entry->expected), r.states, r.edges,
+      format_worst_time(r), r.seconds, row.as_expected() ? "" : "   <- NOT AS EXPECTED");
+}
+
+std::vector<JunitSuite> junit_suites(const std::vector<SuiteRow>& rows) {
+  std::vector<JunitSuite> suites;
+  for (const auto& row : rows) {
+    if (suites.empty() || suites.back().name != row.run.model)
+      suites.push_back({row.run.model, {}, {}});
+    const checker::PropertyResult& r = row.result();
+    JunitCase c;
+    c.name = r.name + " [" + format_params(row.run.params) + "]";
+    c.seconds = r.seconds;
+    if (!row.as_expected()) {
+      c.outcome = JunitCase::Outcome::failed;
+      c.message = std::string("expected ") + checker::to_string(row.entry->expected) + ", got " +
+                  checker::to_string(r.verdict) + ": " + r.message;
+      std::ostringstream details;
+      print_property_block(details, row.run, r, TraceMode::text);
+      c.details = details.str();
+    }
+    suites.back().cases.push_back(std::move(c));
+  }
+  return suites;
+}
+
+Json suite_json(const std::vector<SuiteRow>& rows, bool all_as_expected) {
+  Json entries = Json::array();
+  for (const auto& row : rows)
+    entries.push_back(Json{{"model", row.run.model},
+                           {"params", params_json(row.run.params)},
+                           {"property", row.entry->property},
+                           {"expected", checker::to_string(row.entry->expected)},
+                           {"result", property_json(row.run, row.result(), true)}});
+  return Json{{"suite", std::move(entries)}, {"all_as_expected", all_as_expected}};
+}
+
+} // namespace
+
+int command_suite(const RunSettings& settings) {
+  const auto started = std::chrono::steady_clock::now();
+  // Resolve every entry first: a bad entry is reported before anything runs.
+  std::vector<SuiteRow> rows;
+  Columns columns;
+  for (const auto& def : models::all_models())
+    for (const auto& entry : def.suite) {
+      SuiteRow row;
+      row.definition = &def;
+      row.entry = &entry;
+      row.values = models::resolve_params(def, param_settings(entry.params));
+      row.run.model = def.name;
+      row.run.params = ordered_params(def, row.values);
+      columns.model = std::max(columns.model, def.name.size());
+      columns.params = std::max(columns.params, format_params(row.run.params).size());
+      columns.property = std::max(columns.property, entry.property.size());
+      rows.push_back(std::move(row));
+    }
+  auto junit = open_report_file(settings.junit_path);
+
+  if (!settings.json)
+    print_header(columns);
+  const checker::ExploreOptions options = explore_options(settings);
+  std::map<std::pair<std::string, models::ParamValues>, models::ModelInstance> instances;
+  for (auto& row : rows) {
+    auto key = std::make_pair(row.definition->name, row.values);
+    auto it = instances.find(key);
+    if (it == instances.end())
+      it = instances.emplace(key, row.definition->build(row.values)).first;
+    const models::ModelInstance& instance = it->second;
+    const auto properties =
+        select_properties(instance, row.definition->name, {row.entry->property});
+    row.run.quantum = instance.quantum;
+    row.run.layout = instance.system.layout();
+    row.run.results.push_back(checker::run_property(instance.system, *properties.front(), options));
+    if (!settings.json)
+      print_row(columns, row);
+  }
+
+  std::size_t as_expected = 0;
+  VerdictCounts counts;
+  for (const auto& row : rows) {
+    as_expected += row.as_expected();
+    counts.add(row.result().verdict);
+  }
+  const bool all_as_expected = as_expected == rows.size();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  if (settings.json)
+    print_json(suite_json(rows, all_as_expected));
+  else
+    std::cout << fmt::format("\nsuite: {} checks ({} hold, {} violated, {} incomplete), {} as "
+                             "expected, {} not as expected, {:.2f} s: {}\n",
+                             rows.size(), counts.holds, counts.violated, counts.incomplete,
+                             as_expected, rows.size() - as_expected, seconds,
+                             all_as_expected ? "OK" : "FAILED");
+  if (junit) {
+    write_junit(*junit, junit_suites(rows));
+    junit->close();
+    if (!*junit)
+      throw models::UsageError("cannot write the report file '" + settings.junit_path + "'");
+  }
+  return all_as_expected ? all_hold : some_violated;
+}
+
+} // namespace cli
