@@ -34,7 +34,14 @@ struct Candidate {
 };
 
 // What one thread produces while expanding its chunk of the frontier; reused each level.
+struct Pending {
+  std::uint64_t hash;
+  std::uint32_t duration;
+};
+
 struct Worker {
+  std::vector<Word> pending_states; // successors of the state being expanded
+  std::vector<Pending> pending;
   std::vector<Word> states;
   std::vector<Candidate> candidates;
   std::vector<Edge> edges;
@@ -58,6 +65,8 @@ struct Worker {
 struct StopEnumeration {};
 
 constexpr std::size_t parallel_threshold = 4096;
+constexpr std::size_t merge_prefetch_distance = 8;
+constexpr std::size_t start_batch = 256;
 
 std::uint32_t timed_bit(std::uint32_t duration) { return duration ? Edge::timed_bit : 0u; }
 
@@ -88,32 +97,48 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
       stop(StopReason::memory_limit);
   };
 
-  // Level 0: the start states.
+  // Level 0: the start states, inserted in batches whose slots are prefetched first.
   std::vector<StateId> frontier, next;
   std::vector<Word> buffer(words + 1, 0);
-  try {
-    start.enumerate(buffer.data(), 0, [&] {
-      const std::uint64_t hash = hash_state(buffer.data(), words);
-      if (at_state_limit(buffer.data(), hash)) {
+  std::vector<Word> batch;
+  std::vector<std::uint64_t> batch_hashes;
+  auto insert_batch = [&] {
+    for (std::size_t b = 0; b < batch_hashes.size(); ++b)
+      ex.store.prefetch(batch_hashes[b]);
+    for (std::size_t b = 0; b < batch_hashes.size() && !stopped; ++b) {
+      const Word* state = batch.data() + b * words;
+      if (at_state_limit(state, batch_hashes[b])) {
         stop(StopReason::state_limit);
-        throw StopEnumeration{};
+        break;
       }
-      const auto [id, fresh] = ex.store.insert(buffer.data(), hash);
+      const auto [id, fresh] = ex.store.insert(state, batch_hashes[b]);
       if (!fresh)
-        return;
+        continue;
       ex.parent.push_back(no_parent);
       ++ex.start_states;
       frontier.push_back(id);
-      if (hooks.target && hooks.target(buffer.data())) {
+      if (hooks.target && hooks.target(state)) {
         ex.found = id;
         stop(StopReason::found);
-      } else if ((ex.start_states & 0xffff) == 0) {
-        check_time_and_memory();
       }
-      if (stopped)
-        throw StopEnumeration{};
-      progress.update(ex.store.size(), frontier.size(), 0);
+    }
+    batch.clear();
+    batch_hashes.clear();
+    if (!stopped)
+      check_time_and_memory();
+    progress.update(ex.store.size(), frontier.size(), 0);
+  };
+  try {
+    start.enumerate(buffer.data(), 0, [&] {
+      batch.insert(batch.end(), buffer.begin(), buffer.begin() + words);
+      batch_hashes.push_back(hash_state(buffer.data(), words));
+      if (batch_hashes.size() == start_batch) {
+        insert_batch();
+        if (stopped)
+          throw StopEnumeration{};
+      }
     });
+    insert_batch();
   } catch (const StopEnumeration&) {
   }
 
@@ -138,19 +163,29 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
         if (hooks.expand && !hooks.expand(state))
           continue;
         ++w.expanded;
+        // Generate every successor first and prefetch its slot in the store, so that the
+        // lookups below overlap their cache misses instead of waiting for each in turn.
+        w.pending_states.clear();
+        w.pending.clear();
         const std::size_t n = generator.successors(
             state, w.scratch.data(), [&](const Word* succ, const tioa::StepLabel& label) {
-              const std::uint32_t duration = generator.duration(label);
               const std::uint64_t h = hash_state(succ, words);
-              if (const auto known = ex.store.find(succ, h)) {
-                if (hooks.record_edges)
-                  w.edges.push_back({id, *known | timed_bit(duration)});
-                return;
-              }
-              w.states.insert(w.states.end(), succ, succ + words);
-              w.candidates.push_back({h, id, static_cast<std::uint8_t>(duration),
-                                      hooks.target && hooks.target(succ)});
+              ex.store.prefetch(h);
+              w.pending_states.insert(w.pending_states.end(), succ, succ + words);
+              w.pending.push_back({h, generator.duration(label)});
             });
+        for (std::size_t k = 0; k < n; ++k) {
+          const Word* succ = w.pending_states.data() + k * words;
+          const Pending& p = w.pending[k];
+          if (const auto known = ex.store.find(succ, p.hash)) {
+            if (hooks.record_edges)
+              w.edges.push_back({id, *known | timed_bit(p.duration)});
+            continue;
+          }
+          w.states.insert(w.states.end(), succ, succ + words);
+          w.candidates.push_back({p.hash, id, static_cast<std::uint8_t>(p.duration),
+                                  hooks.target && hooks.target(succ)});
+        }
         w.edge_count += n;
         if (n == 0)
           w.stuck.push_back(id);
@@ -186,6 +221,8 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
       if (hooks.record_edges)
         ex.edge_list.insert(ex.edge_list.end(), w.edges.begin(), w.edges.end());
       for (std::size_t c = 0; c < w.candidates.size(); ++c) {
+        if (c + merge_prefetch_distance < w.candidates.size())
+          ex.store.prefetch(w.candidates[c + merge_prefetch_distance].hash);
         const Candidate& cand = w.candidates[c];
         const Word* succ = w.states.data() + c * words;
         if (at_state_limit(succ, cand.hash)) {

@@ -4,67 +4,51 @@
 
 namespace checker {
 
-StateStore::StateStore(std::uint32_t words) : words_(words) {
-  table_.assign(1024, 0);
-  mask_ = table_.size() - 1;
+namespace {
+constexpr std::uint64_t initial_slots = 1024;
 }
 
-bool StateStore::equal(StateId id, const Word* state) const {
-  const Word* stored = this->state(id);
-  for (std::uint32_t i = 0; i < words_; ++i)
-    if (stored[i] != state[i])
-      return false;
-  return true;
-}
-
-std::optional<StateId> StateStore::find(const Word* state, std::uint64_t hash) const {
-  const std::uint64_t tag = hash >> 32;
-  for (std::uint64_t at = hash & mask_;; at = (at + 1) & mask_) {
-    const std::uint64_t slot = table_[at];
-    if (slot == 0)
-      return std::nullopt;
-    if ((slot >> 32) == tag) {
-      const StateId id = static_cast<StateId>((slot & 0xffffffffu) - 1);
-      if (equal(id, state))
-        return id;
-    }
-  }
+StateStore::StateStore(std::uint32_t words) : words_(words), stride_(words + 1) {
+  table_.assign(initial_slots * stride_, 0);
+  mask_ = initial_slots - 1;
 }
 
 std::pair<StateId, bool> StateStore::insert(const Word* state, std::uint64_t hash) {
-  if ((count_ + 1) * 2 > table_.size())
+  if ((count_ + 1) * 2 > mask_ + 1)
     grow();
   const std::uint64_t tag = hash >> 32;
   std::uint64_t at = hash & mask_;
   for (;; at = (at + 1) & mask_) {
-    const std::uint64_t slot = table_[at];
-    if (slot == 0)
+    const Word* slot = table_.data() + at * stride_;
+    if (slot[0] == 0)
       break;
-    if ((slot >> 32) == tag) {
-      const StateId id = static_cast<StateId>((slot & 0xffffffffu) - 1);
-      if (equal(id, state))
-        return {id, false};
-    }
+    if ((slot[0] >> 32) == tag && same(slot + 1, state))
+      return {static_cast<StateId>((slot[0] & 0xffffffffu) - 1), false};
   }
   if (count_ >= max_states)
     throw std::length_error("state store is full (2^32 states)");
   const StateId id = static_cast<StateId>(count_++);
   arena_.insert(arena_.end(), state, state + words_);
-  table_[at] = (tag << 32) | (std::uint64_t{id} + 1);
+  Word* slot = table_.data() + at * stride_;
+  slot[0] = (tag << 32) | (std::uint64_t{id} + 1);
+  for (std::uint32_t i = 0; i < words_; ++i)
+    slot[1 + i] = state[i];
   return {id, true};
 }
 
 void StateStore::grow() {
-  std::vector<std::uint64_t> bigger(table_.size() * 2, 0);
-  const std::uint64_t mask = bigger.size() - 1;
-  for (std::uint64_t slot : table_) {
-    if (slot == 0)
+  const std::uint64_t slots = (mask_ + 1) * 2;
+  std::vector<Word> bigger(slots * stride_, 0);
+  const std::uint64_t mask = slots - 1;
+  for (std::uint64_t old = 0; old <= mask_; ++old) {
+    const Word* slot = table_.data() + old * stride_;
+    if (slot[0] == 0)
       continue;
-    const StateId id = static_cast<StateId>((slot & 0xffffffffu) - 1);
-    std::uint64_t at = hash_state(state(id), words_) & mask;
-    while (bigger[at] != 0)
+    std::uint64_t at = hash_state(slot + 1, words_) & mask;
+    while (bigger[at * stride_] != 0)
       at = (at + 1) & mask;
-    bigger[at] = slot;
+    for (std::uint32_t i = 0; i < stride_; ++i)
+      bigger[at * stride_ + i] = slot[i];
   }
   table_.swap(bigger);
   mask_ = mask;

@@ -1,8 +1,8 @@
 #pragma once
-// The visited-state store: states packed one after another in an arena (no allocation
-// per state) and an open-addressing hash table with linear probing whose slots hold a
-// 32-bit hash tag and the state's id. Ids are dense, in insertion order, so per-state
-// data (parents, flags) lives in plain vectors indexed by id.
+// The visited-state store: an open-addressing hash table with linear probing whose slots
+// hold the state itself (so a lookup costs one cache miss, not two), plus an arena with
+// the states in id order (so per-state data lives in plain vectors indexed by id, and
+// expanding state `id` reads the arena sequentially). Ids are dense, in insertion order.
 //
 // find() may run on several threads at once while nothing inserts; insert() is for one
 // thread at a time (the explorer's merge phase).
@@ -38,25 +38,46 @@ public:
   std::uint64_t size() const { return count_; }
   const Word* state(StateId id) const { return arena_.data() + std::size_t{id} * words_; }
 
-  std::optional<StateId> find(const Word* state, std::uint64_t hash) const;
+  // Starts loading the slot where a state with this hash would be.
+  void prefetch(std::uint64_t hash) const {
+    __builtin_prefetch(table_.data() + (hash & mask_) * stride_);
+  }
+
+  std::optional<StateId> find(const Word* state, std::uint64_t hash) const {
+    const std::uint64_t tag = hash >> 32;
+    for (std::uint64_t at = hash & mask_;; at = (at + 1) & mask_) {
+      const Word* slot = table_.data() + at * stride_;
+      if (slot[0] == 0)
+        return std::nullopt;
+      if ((slot[0] >> 32) == tag && same(slot + 1, state))
+        return static_cast<StateId>((slot[0] & 0xffffffffu) - 1);
+    }
+  }
+
   // The id of the state, and whether it was new.
   std::pair<StateId, bool> insert(const Word* state, std::uint64_t hash);
 
   std::size_t memory_bytes() const {
-    return arena_.capacity() * sizeof(Word) + table_.capacity() * sizeof(std::uint64_t);
+    return (arena_.capacity() + table_.capacity()) * sizeof(Word);
   }
 
   static constexpr std::uint64_t max_states = 0xfffffff0u;
 
 private:
+  bool same(const Word* a, const Word* b) const {
+    for (std::uint32_t i = 0; i < words_; ++i)
+      if (a[i] != b[i])
+        return false;
+    return true;
+  }
   void grow();
-  bool equal(StateId id, const Word* state) const;
 
   std::uint32_t words_;
+  std::uint32_t stride_; // words per slot: tag << 32 | (id + 1), then the state
   std::uint64_t count_ = 0;
-  std::vector<Word> arena_;
-  std::vector<std::uint64_t> table_; // 0: empty; else tag << 32 | (id + 1)
   std::uint64_t mask_ = 0;
+  std::vector<Word> arena_;
+  std::vector<Word> table_;
 };
 
 } // namespace checker

@@ -22,7 +22,7 @@ bool ActionSignature::contains(const Params& p) const {
   for (std::size_t i = 0; i < params.size(); ++i)
     if (p[i] < params[i].lo || p[i] > params[i].hi)
       return false;
-  return true;
+  return !accepts || accepts(p);
 }
 
 bool ActionSignature::overlaps(const ActionSignature& other) const {

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -36,9 +37,16 @@ struct ActionSignature {
   std::string name;
   ActionKind kind = ActionKind::internal;
   std::vector<ParamRange> params;
+  // Narrows the box when set: the inputs of a composite accept a union of boxes.
+  std::function<bool(const Params&)> accepts;
+
+  ActionSignature() = default;
+  ActionSignature(std::string name, ActionKind kind, std::vector<ParamRange> params = {},
+                  std::function<bool(const Params&)> accepts = {})
+      : name(std::move(name)), kind(kind), params(std::move(params)), accepts(std::move(accepts)) {}
 
   bool contains(const Params& p) const;
-  // True when some parameter values belong to both (same name and arity, boxes meet).
+  // True when some parameter values may belong to both (same name and arity, boxes meet).
   bool overlaps(const ActionSignature& other) const;
   std::string label(const Params& p) const; // "move(3)"
 };

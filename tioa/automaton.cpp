@@ -127,7 +127,7 @@ TransitionBuilder Automaton::declare_action(const std::string& name, ActionKind 
   for (const auto& existing : actions_)
     if (existing.name == name)
       throw ModelError("action '" + name + "' is declared twice in " + name_);
-  return TransitionBuilder(*this, add_action(ActionSignature{name, kind, std::move(params)}, {}));
+  return TransitionBuilder(*this, add_action(ActionSignature(name, kind, std::move(params)), {}));
 }
 
 TransitionBuilder Automaton::input(const std::string& name, std::vector<ParamRange> params) {

@@ -99,8 +99,13 @@ public:
     info.kind = VariableKind::enumeration;
     info.hi = static_cast<std::int64_t>(names.size()) - 1;
     info.enum_names = std::move(names);
-    if (initial)
-      info.initial_code = static_cast<std::uint64_t>(*initial);
+    if (initial) {
+      const auto code = static_cast<std::int64_t>(*initial);
+      if (code < 0 || code > info.hi)
+        throw ModelError("initial value of '" + name + "' is not one of its " +
+                         std::to_string(info.enum_names.size()) + " values");
+      info.initial_code = static_cast<std::uint64_t>(code);
+    }
     return Variable<E>{declare(std::move(info))};
   }
   // Arrays (maps from ids to variables): `ids` is a count (ids 0..count-1) or ids(a, b).

@@ -1,6 +1,7 @@
 #include "tioa/compose.hpp"
 
 #include <algorithm>
+#include <map>
 #include <memory>
 #include <set>
 
@@ -48,6 +49,15 @@ void check_compatible(const std::vector<Automaton>& components) {
     }
 }
 
+constexpr double max_enumerated_box = 1e6;
+
+double box_size(const std::vector<ParamRange>& box) {
+  double size = 1;
+  for (const auto& r : box)
+    size *= static_cast<double>(r.hi) - r.lo + 1;
+  return size;
+}
+
 // Runs the owner's transition and every receiving input, choice by choice (mixed radix).
 Transition synchronised(std::vector<Participant> parts) {
   auto shared = std::make_shared<const std::vector<Participant>>(std::move(parts));
@@ -70,8 +80,8 @@ Transition synchronised(std::vector<Participant> parts) {
   };
   t.choice_effect = [shared, receives](State& s, const Params& p, std::uint32_t choice) {
     // Choice counts are read before any effect runs, so all parts see the pre-state.
-    std::uint32_t counts[64];
-    const std::size_t n = std::min<std::size_t>(shared->size(), 64);
+    std::uint32_t counts[max_components + 1];
+    const std::size_t n = shared->size();
     for (std::size_t i = 0; i < n; ++i) {
       const Participant& part = (*shared)[i];
       counts[i] = receives(part, p) ? part.transition.choice_count(s.at(part.base), p) : 1;
@@ -96,8 +106,9 @@ Transition synchronised(std::vector<Participant> parts) {
 Automaton compose(const std::string& name, const std::vector<Automaton>& components) {
   if (components.empty())
     throw ModelError("composition '" + name + "' has no components");
-  if (components.size() > 64)
-    throw ModelError("composition '" + name + "' has more than 64 components");
+  if (components.size() > max_components)
+    throw ModelError("composition '" + name + "' has more than " +
+                     std::to_string(max_components) + " components");
   check_compatible(components);
 
   Automaton out(name);
@@ -105,11 +116,12 @@ Automaton compose(const std::string& name, const std::vector<Automaton>& compone
   for (const auto& c : components)
     placed.push_back({&c, out.mutable_layout().append(c.layout(), c.name() + ".")});
 
-  std::set<std::string> output_names;
+  // Every output box of the composite, by action name.
+  std::map<std::string, std::vector<ActionSignature>> outputs;
   for (const auto& c : components)
     for (const auto& a : c.actions())
       if (a.kind == ActionKind::output)
-        output_names.insert(a.name);
+        outputs[a.name].push_back(a);
 
   auto inputs_named = [&](const std::string& action, std::size_t skip) {
     std::vector<Participant> parts;
@@ -139,37 +151,54 @@ Automaton compose(const std::string& name, const std::vector<Automaton>& compone
     }
   }
 
-  // Inputs that no component outputs stay inputs of the composite.
+  // Inputs stay inputs of the composite for the parameter values that no component
+  // outputs: one input per name, over the smallest box holding every component's box,
+  // that accepts exactly the points of the union of those boxes minus the output boxes.
   std::set<std::string> done;
   for (const auto& p : placed)
     for (const auto& sig : p.automaton->actions()) {
-      if (sig.kind != ActionKind::input || output_names.count(sig.name) ||
-          !done.insert(sig.name).second)
+      if (sig.kind != ActionKind::input || !done.insert(sig.name).second)
         continue;
       auto parts = inputs_named(sig.name, placed.size());
+      std::vector<ActionSignature> boxes;
       ActionSignature merged = parts.front().signature;
       for (const auto& part : parts) {
         if (part.signature.params.size() != merged.params.size())
           throw ModelError("input '" + sig.name + "' has different arities in different components");
+        boxes.push_back(part.signature);
         for (std::size_t k = 0; k < merged.params.size(); ++k) {
           merged.params[k].lo = std::min(merged.params[k].lo, part.signature.params[k].lo);
           merged.params[k].hi = std::max(merged.params[k].hi, part.signature.params[k].hi);
         }
       }
-      // The environment drives these: a dummy owner that accepts every point of the box;
-      // a point that no receiver's box contains has no successor (zero choices).
+      const auto& covering = outputs[sig.name];
+      auto output_value = [&](const Params& p) {
+        return std::any_of(covering.begin(), covering.end(),
+                           [&](const ActionSignature& o) { return o.contains(p); });
+      };
+      // Drop the input when every value of every box is an output (boxes too large to
+      // enumerate are kept: an input that never occurs costs nothing).
+      auto covered = [&](const ActionSignature& box) {
+        if (covering.empty() || box_size(box.params) > max_enumerated_box)
+          return false;
+        bool all = true;
+        for_each_params(box.params, [&](const Params& p) { all = all && output_value(p); });
+        return all;
+      };
+      if (std::all_of(boxes.begin(), boxes.end(), covered))
+        continue;
+      merged.accepts = [boxes, covering](const Params& p) {
+        return std::any_of(boxes.begin(), boxes.end(),
+                           [&](const ActionSignature& b) { return b.contains(p); }) &&
+               std::none_of(covering.begin(), covering.end(),
+                            [&](const ActionSignature& o) { return o.contains(p); });
+      };
+      // The environment drives these: a dummy owner with no effect of its own.
       Participant environment{Transition{}, merged, 0, "environment"};
       environment.signature.kind = ActionKind::internal;
       std::vector<Participant> all{environment};
       all.insert(all.end(), parts.begin(), parts.end());
-      Transition t = synchronised(std::move(all));
-      auto receivers = std::make_shared<const std::vector<Participant>>(std::move(parts));
-      t.choices = [receivers, count = t.choices](const State& s, const Params& p) {
-        const bool received = std::any_of(receivers->begin(), receivers->end(),
-                                          [&](const Participant& r) { return r.signature.contains(p); });
-        return received ? count(s, p) : 0u;
-      };
-      out.add_action(merged, std::move(t));
+      out.add_action(merged, synchronised(std::move(all)));
     }
 
   // Time passes in the composite when it can pass in every timed component.
@@ -227,10 +256,14 @@ Automaton operator||(const Automaton& a, const Automaton& b) {
 Automaton hide(const Automaton& automaton, const std::vector<std::string>& outputs) {
   Automaton out = automaton;
   for (const auto& name : outputs) {
-    auto index = out.find_action(name);
-    if (!index || out.actions()[*index].kind != ActionKind::output)
+    bool hidden = false;
+    for (std::size_t i = 0; i < out.actions().size(); ++i)
+      if (out.actions()[i].name == name && out.actions()[i].kind == ActionKind::output) {
+        out.signature(i).kind = ActionKind::internal;
+        hidden = true;
+      }
+    if (!hidden)
       throw ModelError("cannot hide '" + name + "': it is not an output of " + automaton.name());
-    out.signature(*index).kind = ActionKind::internal;
   }
   return out;
 }

@@ -8,9 +8,11 @@
 // appear once), no output shared by two components, no internal action of one that is
 // an action of another; a violation is a ModelError naming both components.
 //
-// Decisions: an input is removed from the composite's signature when some component
-// has an output of the same name, and same-named unmatched inputs merge into one input
-// whose box is the smallest box holding all of them.
+// Decisions: an input of a component stays an input of the composite for the parameter
+// values that no component outputs; same-named inputs of several components become one
+// input of the composite (over the smallest box holding theirs, accepting exactly the
+// values of the union of their boxes), and every component whose box holds a value
+// receives it.
 
 #include <string>
 #include <vector>
@@ -18,6 +20,8 @@
 #include "tioa/automaton.hpp"
 
 namespace tioa {
+
+inline constexpr std::size_t max_components = 64;
 
 Automaton compose(const std::string& name, const std::vector<Automaton>& components);
 Automaton operator||(const Automaton& a, const Automaton& b);

@@ -52,7 +52,10 @@ public:
     for (std::uint32_t a = 0; a < actions.size(); ++a) {
       const Transition& t = transitions[a];
       label.action = a;
+      const bool narrowed = static_cast<bool>(actions[a].accepts);
       for_each_params(actions[a].params, [&](const Params& p) {
+        if (narrowed && !actions[a].accepts(p))
+          return;
         if (!t.enabled(from, p)) {
           if (actions[a].kind == ActionKind::input)
             throw_input_not_enabled(actions[a], p);

@@ -107,8 +107,8 @@ ModelDefinition fischer_definition() {
                          static_cast<int>(p.at("B")));
   };
   using checker::Verdict;
-  d.suite = {{{{"N", 4}, {"A", 1}, {"B", 2}}, "mutex", Verdict::holds},
-             {{{"N", 4}, {"A", 1}, {"B", 2}}, "no-timelock", Verdict::holds},
+  d.suite = {{{{"N", 6}, {"A", 1}, {"B", 2}}, "mutex", Verdict::holds},
+             {{{"N", 6}, {"A", 1}, {"B", 2}}, "no-timelock", Verdict::holds},
              {{{"N", 3}, {"A", 2}, {"B", 1}}, "mutex", Verdict::violated}};
   return d;
 }

@@ -82,7 +82,8 @@ ModelDefinition token_ring_definition() {
              {{{"N", 5}, {"K", 4}}, "legal-closure", Verdict::holds},
              {{{"N", 5}, {"K", 4}}, "convergence", Verdict::holds},
              {{{"N", 5}, {"K", 4}}, "transitivity", Verdict::holds},
-             {{{"N", 5}, {"K", 3}}, "convergence", Verdict::violated}};
+             {{{"N", 5}, {"K", 3}}, "convergence", Verdict::violated},
+             {{{"N", 7}, {"K", 6}}, "convergence", Verdict::holds}};
   return d;
 }
 
