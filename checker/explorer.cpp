@@ -68,7 +68,9 @@ constexpr std::size_t parallel_threshold = 4096;
 constexpr std::size_t merge_prefetch_distance = 8;
 constexpr std::size_t start_batch = 256;
 
-std::uint32_t timed_bit(std::uint32_t duration) { return duration ? Edge::timed_bit : 0u; }
+std::uint32_t timed_bit(std::uint32_t duration) {
+  return duration ? Edge::timed_bit : 0u;
+}
 
 } // namespace
 
@@ -87,8 +89,7 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   // At the state limit, a state that is not stored yet ends the run (incomplete); so a
   // space of exactly max_states states still finishes.
   auto at_state_limit = [&](const Word* state, std::uint64_t hash) {
-    return limits.max_states && ex.store.size() >= limits.max_states &&
-           !ex.store.find(state, hash);
+    return limits.max_states && ex.store.size() >= limits.max_states && !ex.store.find(state, hash);
   };
   auto check_time_and_memory = [&] {
     if (limits.max_seconds > 0 && progress.elapsed() > limits.max_seconds)
@@ -213,13 +214,18 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
 
     // Phase 2: merge, in frontier order.
     next.clear();
-    for (std::size_t t = 0; t < used && !stopped; ++t) {
-      Worker& w = workers[t];
+    // The whole level was expanded, so its counts go in whole, whatever stops the merge:
+    // they are then the same for every thread count.
+    for (std::size_t t = 0; t < used; ++t) {
+      const Worker& w = workers[t];
       ex.edges += w.edge_count;
       ex.expanded += w.expanded;
       ex.stuck.insert(ex.stuck.end(), w.stuck.begin(), w.stuck.end());
       if (hooks.record_edges)
         ex.edge_list.insert(ex.edge_list.end(), w.edges.begin(), w.edges.end());
+    }
+    for (std::size_t t = 0; t < used && !stopped; ++t) {
+      Worker& w = workers[t];
       for (std::size_t c = 0; c < w.candidates.size(); ++c) {
         if (c + merge_prefetch_distance < w.candidates.size())
           ex.store.prefetch(w.candidates[c + merge_prefetch_distance].hash);

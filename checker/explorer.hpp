@@ -46,9 +46,9 @@ struct Exploration {
   std::uint64_t expanded = 0;
   std::uint32_t depth = 0; // levels completed
   StopReason stop = StopReason::finished;
-  std::optional<StateId> found;             // the first target state
-  std::vector<StateId> stuck;               // expanded states with no successor at all
-  std::vector<Edge> edge_list;              // when record_edges
+  std::optional<StateId> found; // the first target state
+  std::vector<StateId> stuck;   // expanded states with no successor at all
+  std::vector<Edge> edge_list;  // when record_edges
   double seconds = 0;
   unsigned threads = 1;
 

@@ -70,8 +70,8 @@ PropertyResult check_legal_set(const Automaton& system, const StatePredicate& le
     r.message = "the legal set is empty (seed 000 §3.1 requires a nonempty set)";
   } else {
     r.verdict = Verdict::holds;
-    r.message = "closed: every step from each of its " + std::to_string(r.states) +
-                " states stays in it";
+    r.message =
+        "closed: every step from each of its " + std::to_string(r.states) + " states stays in it";
   }
   return r;
 }

@@ -18,7 +18,7 @@ struct Property {
   PropertyKind kind = PropertyKind::invariant;
   StatePredicate predicate; // the invariant, or the legal set L (L2 for transitivity)
   std::string predicate_name;
-  StatePredicate first;     // transitivity: the intermediate legal set L1
+  StatePredicate first; // transitivity: the intermediate legal set L1
   std::string first_name;
 };
 

@@ -16,9 +16,9 @@ tioa::Automaton R(const tioa::Automaton& a, const ExploreOptions& options) {
   states.reserve(ex.store.size() * generator.words());
   for (StateId id = 0; id < ex.store.size(); ++id)
     states.insert(states.end(), ex.store.state(id), ex.store.state(id) + generator.words());
-  return tioa::Start(a, tioa::StartSet::listed(a.layout().bits(), generator.words(),
-                                               std::move(states),
-                                               "the reachable states of " + a.name() + " (R)"));
+  return tioa::Start(a,
+                     tioa::StartSet::listed(a.layout().bits(), generator.words(), std::move(states),
+                                            "the reachable states of " + a.name() + " (R)"));
 }
 
 } // namespace checker

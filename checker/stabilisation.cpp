@@ -61,8 +61,16 @@ struct Components {
   static constexpr std::int64_t never = -1; // no state outside L is reachable
   std::vector<std::uint32_t> of;            // component of every state
   std::vector<std::int64_t> last;           // last(S) per component
-  std::vector<StateId> lasso_members;       // smallest outside-L member of each lasso component
-  std::uint64_t zeno = 0;                   // components with only zero-time cycles outside L
+  std::vector<std::uint8_t> can_tick;       // some path from S lets time pass
+  // Smallest outside-L member of each component with a timed cycle through it (a lasso).
+  std::vector<StateId> lasso_members;
+  // Smallest member of each component with a timed cycle inside L from which a state
+  // outside L is still reachable: executions may leave L arbitrarily late.
+  std::vector<StateId> unbounded_members;
+  // Smallest outside-L member of each component from which time can never pass again.
+  std::vector<StateId> timelocked_members;
+  std::uint64_t zeno = 0;        // components with only zero-time cycles outside L
+  std::uint64_t legal_locks = 0; // states in L from which time can never pass again
 };
 
 Components strongly_connected(const Graph& g, std::size_t n) {
@@ -90,7 +98,7 @@ Components strongly_connected(const Graph& g, std::size_t n) {
       members.push_back(w);
     } while (w != root);
     std::optional<StateId> outside;
-    bool internal = false, internal_timed = false;
+    bool internal = false, internal_timed = false, can_tick = false;
     std::int64_t last = Components::never;
     for (StateId m : members) {
       if (!g.legal[m] && (!outside || m < *outside))
@@ -101,19 +109,31 @@ Components strongly_connected(const Graph& g, std::size_t n) {
         if (c.of[t] == id) {
           internal = true;
           internal_timed = internal_timed || d == 1;
-        } else if (c.last[c.of[t]] != Components::never) {
-          last = std::max(last, d + c.last[c.of[t]]);
+        } else {
+          can_tick = can_tick || d == 1 || c.can_tick[c.of[t]];
+          if (c.last[c.of[t]] != Components::never)
+            last = std::max(last, d + c.last[c.of[t]]);
         }
       }
     }
+    can_tick = can_tick || internal_timed;
+    const StateId smallest = *std::min_element(members.begin(), members.end());
     if (outside) {
       last = std::max<std::int64_t>(last, 0);
-      if (internal_timed)
+      if (!can_tick)
+        c.timelocked_members.push_back(*outside);
+      else if (internal_timed)
         c.lasso_members.push_back(*outside);
       else if (internal)
         ++c.zeno;
+    } else {
+      if (internal_timed && last != Components::never)
+        c.unbounded_members.push_back(smallest);
+      if (!can_tick)
+        c.legal_locks += members.size();
     }
     c.last.push_back(last);
+    c.can_tick.push_back(can_tick ? 1 : 0);
   };
 
   for (StateId root = 0; root < n; ++root) {
@@ -148,41 +168,44 @@ Components strongly_connected(const Graph& g, std::size_t n) {
   return c;
 }
 
+// A path inside a component: each state after the first with the duration of the edge
+// that reaches it (a tick and an action may join the same two states).
+using Path = std::vector<std::pair<StateId, std::uint32_t>>;
+
 // Shortest path (in steps) from `from` to a state satisfying `goal`, inside the
-// component of `from`; returns the states after `from` (empty when `from` is the goal).
+// component of `from`; empty when `from` is the goal, nullopt when none is.
 template <class Goal>
-std::optional<std::vector<StateId>> path_inside(const Graph& g, const Components& c, StateId from,
-                                                Goal&& goal) {
+std::optional<Path> path_inside(const Graph& g, const Components& c, StateId from, Goal&& goal) {
   std::vector<StateId> queue{from};
-  std::unordered_map<StateId, StateId> parent{{from, no_parent}};
+  std::unordered_map<StateId, std::pair<StateId, std::uint32_t>> parent{{from, {no_parent, 0}}};
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const StateId v = queue[head];
     if (goal(v)) {
-      std::vector<StateId> path;
-      for (StateId at = v; at != from; at = parent.at(at))
-        path.push_back(at);
+      Path path;
+      for (StateId at = v; at != from; at = parent.at(at).first)
+        path.emplace_back(at, parent.at(at).second);
       std::reverse(path.begin(), path.end());
       return path;
     }
     for (auto [it, end] = g.out(v); it != end; ++it) {
       const StateId t = *it & ~Edge::timed_bit;
-      if (c.of[t] == c.of[from] && parent.emplace(t, v).second)
+      const std::uint32_t d = (*it & Edge::timed_bit) ? 1 : 0;
+      if (c.of[t] == c.of[from] && parent.emplace(t, std::make_pair(v, d)).second)
         queue.push_back(t);
     }
   }
   return std::nullopt;
 }
 
-void append_states(const tioa::SuccessorGenerator& gen, const Exploration& ex, Trace& trace,
-                   const std::vector<StateId>& states) {
-  for (StateId s : states)
-    extend(gen, trace, ex.store.state(s));
+void append(const tioa::SuccessorGenerator& gen, const Exploration& ex, Trace& trace,
+            const Path& path) {
+  for (const auto& [state, duration] : path)
+    extend(gen, trace, ex.store.state(state), duration);
 }
 
-// A stem to u, the smallest state outside L of a lasso component, then a cycle
-// u ~> x -(duration 1)-> y ~> u inside the component.
-Trace lasso(const tioa::SuccessorGenerator& gen, const Exploration& ex, const Graph& g,
-            const Components& c, StateId u) {
+// A stem to u, then a cycle u ~> x -(duration 1)-> y ~> u inside u's component.
+Trace timed_cycle(const tioa::SuccessorGenerator& gen, const Exploration& ex, const Graph& g,
+                  const Components& c, StateId u) {
   Trace trace = trace_to(gen, ex, u);
   const std::size_t loop_start = trace.steps.size() - 1;
   StateId y = no_parent; // the end of the timed step
@@ -196,16 +219,18 @@ Trace lasso(const tioa::SuccessorGenerator& gen, const Exploration& ex, const Gr
     }
     return false;
   };
-  append_states(gen, ex, trace, *path_inside(g, c, u, timed_internal));
-  extend(gen, trace, ex.store.state(y));
-  append_states(gen, ex, trace, *path_inside(g, c, y, [&](StateId v) { return v == u; }));
+  append(gen, ex, trace, *path_inside(g, c, u, timed_internal));
+  extend(gen, trace, ex.store.state(y), 1);
+  append(gen, ex, trace, *path_inside(g, c, y, [&](StateId v) { return v == u; }));
   trace.loop_start = loop_start;
   return trace;
 }
 
 // The worst case: from the start state with the largest last(S), keep taking an exit
 // that realises last(S); when the component itself realises it, go to its state outside
-// L and then into a component from which L is never left again.
+// L and then into a component from which L is never left again. The components on this
+// walk have no timed internal edge (else the check reported a lasso or an unbounded
+// time), so steps inside them take no time.
 Trace witness(const tioa::SuccessorGenerator& gen, const Exploration& ex, const Graph& g,
               const Components& c, StateId root) {
   Trace trace = trace_to(gen, ex, root);
@@ -214,38 +239,40 @@ Trace witness(const tioa::SuccessorGenerator& gen, const Exploration& ex, const 
     const std::uint32_t comp = c.of[cur];
     const std::int64_t last = c.last[comp];
     StateId next = no_parent;
+    std::uint32_t next_duration = 0;
     auto exit_where = [&](auto&& good) {
       return [&, good](StateId v) {
         for (auto [it, end] = g.out(v); it != end; ++it) {
           const StateId t = *it & ~Edge::timed_bit;
-          const std::int64_t d = (*it & Edge::timed_bit) ? 1 : 0;
+          const std::uint32_t d = (*it & Edge::timed_bit) ? 1 : 0;
           if (c.of[t] != comp && good(t, d)) {
             next = t;
+            next_duration = d;
             return true;
           }
         }
         return false;
       };
     };
-    auto realising = exit_where([&](StateId t, std::int64_t d) {
+    auto realising = exit_where([&](StateId t, std::uint32_t d) {
       return c.last[c.of[t]] != Components::never && d + c.last[c.of[t]] == last;
     });
     if (auto path = path_inside(g, c, cur, realising)) {
-      append_states(gen, ex, trace, *path);
-      extend(gen, trace, ex.store.state(next));
+      append(gen, ex, trace, *path);
+      extend(gen, trace, ex.store.state(next), next_duration);
       cur = next;
       continue;
     }
     // This component realises last(S) = 0 itself: visit its state outside L, then leave.
     if (auto path = path_inside(g, c, cur, [&](StateId v) { return !g.legal[v]; })) {
-      append_states(gen, ex, trace, *path);
-      cur = path->empty() ? cur : path->back();
+      append(gen, ex, trace, *path);
+      cur = path->empty() ? cur : path->back().first;
     }
-    auto for_good = exit_where(
-        [&](StateId t, std::int64_t) { return c.last[c.of[t]] == Components::never; });
+    auto for_good =
+        exit_where([&](StateId t, std::uint32_t) { return c.last[c.of[t]] == Components::never; });
     if (auto path = path_inside(g, c, cur, for_good)) {
-      append_states(gen, ex, trace, *path);
-      extend(gen, trace, ex.store.state(next));
+      append(gen, ex, trace, *path);
+      extend(gen, trace, ex.store.state(next), next_duration);
     }
     return trace;
   }
@@ -273,29 +300,30 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
     return r;
   }
   const Graph g = build_graph(ex, legal);
-  const char* stuck_kind = gen.timed() ? "time-lock" : "deadlock";
-  const auto stuck_outside = std::find_if(ex.stuck.begin(), ex.stuck.end(),
-                                          [&](StateId s) { return !g.legal[s]; });
-  if (stuck_outside != ex.stuck.end()) {
+  const Components c = strongly_connected(g, ex.store.size());
+  const char* lock_kind = gen.timed() ? "time-lock" : "deadlock";
+  if (!c.timelocked_members.empty()) {
+    const StateId u = *std::min_element(c.timelocked_members.begin(), c.timelocked_members.end());
     r.verdict = Verdict::violated;
-    r.trace = trace_to(gen, ex, *stuck_outside);
+    r.trace = trace_to(gen, ex, u);
     r.trace_role = "counterexample";
-    r.trace_kind = stuck_kind;
-    r.message = std::string("an execution gets stuck outside L (") + stuck_kind + ": no action" +
-                (gen.timed() ? " and no tick" : "") + ")";
+    r.trace_kind = lock_kind;
+    r.message = gen.timed()
+                    ? "an execution reaches a state outside L from which time can never pass "
+                      "again (time-lock)"
+                    : "an execution gets stuck outside L (deadlock: no action)";
     return r;
   }
-  if (!ex.stuck.empty())
-    r.notes.push_back(std::to_string(ex.stuck.size()) + " reachable states in L with no action" +
-                      (gen.timed() ? " and no tick" : "") + " (" + stuck_kind + ")");
+  if (c.legal_locks > 0)
+    r.notes.push_back(
+        std::to_string(c.legal_locks) + " reachable states in L from which " +
+        (gen.timed() ? "time can never pass again (time-lock)" : "no step is possible (deadlock)"));
   std::uint64_t escapes = 0;
   for (const Edge& e : ex.edge_list)
     escapes += (g.legal[e.from] && !g.legal[e.target()]) ? 1 : 0;
   if (escapes > 0)
     r.notes.push_back("L is not closed: " + std::to_string(escapes) +
                       " reachable steps leave it; times count to the last state outside L");
-
-  const Components c = strongly_connected(g, ex.store.size());
   if (c.zeno > 0)
     r.notes.push_back(std::to_string(c.zeno) +
                       " zero-time cycles outside L: Zeno executions, in which time never "
@@ -303,12 +331,23 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
   if (!c.lasso_members.empty()) {
     const StateId u = *std::min_element(c.lasso_members.begin(), c.lasso_members.end());
     r.verdict = Verdict::violated;
-    r.trace = lasso(gen, ex, g, c, u);
+    r.trace = timed_cycle(gen, ex, g, c, u);
     r.trace_role = "counterexample";
     r.trace_kind = "lasso";
-    r.message = "an execution is outside L again and again forever while time passes (lasso: stem " +
-                std::to_string(*r.trace->loop_start) + ", cycle " +
-                std::to_string(r.trace->length() - *r.trace->loop_start) + " steps)";
+    r.message =
+        "an execution is outside L again and again forever while time passes (lasso: stem " +
+        std::to_string(*r.trace->loop_start) + ", cycle " +
+        std::to_string(r.trace->length() - *r.trace->loop_start) + " steps)";
+    return r;
+  }
+  if (!c.unbounded_members.empty()) {
+    const StateId u = *std::min_element(c.unbounded_members.begin(), c.unbounded_members.end());
+    r.verdict = Verdict::violated;
+    r.trace = timed_cycle(gen, ex, g, c, u);
+    r.trace_role = "counterexample";
+    r.trace_kind = "unbounded";
+    r.message = "no time bound: an execution can repeat this cycle in L, in which time passes, "
+                "as often as it likes and then still leave L";
     return r;
   }
 

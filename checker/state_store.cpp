@@ -9,7 +9,7 @@ constexpr std::uint64_t initial_slots = 1024;
 }
 
 StateStore::StateStore(std::uint32_t words) : words_(words), stride_(words + 1) {
-  table_.assign(initial_slots * stride_, 0);
+  table_ = PageBuffer(initial_slots * stride_);
   mask_ = initial_slots - 1;
 }
 
@@ -38,17 +38,17 @@ std::pair<StateId, bool> StateStore::insert(const Word* state, std::uint64_t has
 
 void StateStore::grow() {
   const std::uint64_t slots = (mask_ + 1) * 2;
-  std::vector<Word> bigger(slots * stride_, 0);
+  PageBuffer bigger(slots * stride_);
   const std::uint64_t mask = slots - 1;
   for (std::uint64_t old = 0; old <= mask_; ++old) {
     const Word* slot = table_.data() + old * stride_;
     if (slot[0] == 0)
       continue;
     std::uint64_t at = hash_state(slot + 1, words_) & mask;
-    while (bigger[at * stride_] != 0)
+    while (bigger.data()[at * stride_] != 0)
       at = (at + 1) & mask;
     for (std::uint32_t i = 0; i < stride_; ++i)
-      bigger[at * stride_ + i] = slot[i];
+      bigger.data()[at * stride_ + i] = slot[i];
   }
   table_.swap(bigger);
   mask_ = mask;

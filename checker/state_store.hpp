@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "checker/page_buffer.hpp"
 #include "tioa/variables.hpp"
 
 namespace checker {
@@ -57,9 +58,7 @@ public:
   // The id of the state, and whether it was new.
   std::pair<StateId, bool> insert(const Word* state, std::uint64_t hash);
 
-  std::size_t memory_bytes() const {
-    return (arena_.capacity() + table_.capacity()) * sizeof(Word);
-  }
+  std::size_t memory_bytes() const { return arena_.capacity() * sizeof(Word) + table_.bytes(); }
 
   static constexpr std::uint64_t max_states = 0xfffffff0u;
 
@@ -77,7 +76,7 @@ private:
   std::uint64_t count_ = 0;
   std::uint64_t mask_ = 0;
   std::vector<Word> arena_;
-  std::vector<Word> table_;
+  PageBuffer table_;
 };
 
 } // namespace checker

@@ -11,15 +11,20 @@ std::vector<Word> copy_state(const Word* state, std::uint32_t words) {
   return std::vector<Word>(state, state + words);
 }
 
-// The first step from `from` that reaches `to`, if any.
-std::optional<std::pair<std::string, std::uint32_t>>
-step_between(const tioa::SuccessorGenerator& generator, const Word* from, const Word* to) {
+struct Step {
+  std::string action;
+  std::uint32_t duration;
+};
+
+// Every step from `from` that reaches `to`, in the generator's order.
+std::vector<Step> steps_between(const tioa::SuccessorGenerator& generator, const Word* from,
+                                const Word* to) {
   const std::uint32_t words = generator.words();
   std::vector<Word> scratch(words + 1, 0);
-  std::optional<std::pair<std::string, std::uint32_t>> found;
+  std::vector<Step> found;
   generator.successors(from, scratch.data(), [&](const Word* succ, const tioa::StepLabel& label) {
-    if (!found && std::memcmp(succ, to, words * sizeof(Word)) == 0)
-      found.emplace(generator.describe(label), generator.duration(label));
+    if (std::memcmp(succ, to, words * sizeof(Word)) == 0)
+      found.push_back({generator.describe(label), generator.duration(label)});
   });
   return found;
 }
@@ -38,14 +43,16 @@ Trace trace_to(const tioa::SuccessorGenerator& generator, const Exploration& ex,
   return trace;
 }
 
-bool extend(const tioa::SuccessorGenerator& generator, Trace& trace, const Word* next) {
+bool extend(const tioa::SuccessorGenerator& generator, Trace& trace, const Word* next,
+            std::optional<std::uint32_t> duration) {
   const TraceStep& last = trace.steps.back();
-  const auto step = step_between(generator, last.state.data(), next);
-  if (!step)
-    return false;
-  trace.steps.push_back(
-      {step->first, last.time + step->second, copy_state(next, generator.words())});
-  return true;
+  for (const Step& step : steps_between(generator, last.state.data(), next))
+    if (!duration || step.duration == *duration) {
+      trace.steps.push_back(
+          {step.action, last.time + step.duration, copy_state(next, generator.words())});
+      return true;
+    }
+  return false;
 }
 
 bool replay(const tioa::SuccessorGenerator& generator, const Trace& trace, std::string* why) {
@@ -56,16 +63,21 @@ bool replay(const tioa::SuccessorGenerator& generator, const Trace& trace, std::
   };
   if (trace.steps.empty())
     return fail("empty trace");
+  if (trace.steps.front().time != 0)
+    return fail("the trace does not start at time 0");
   for (std::size_t i = 1; i < trace.steps.size(); ++i) {
     const TraceStep& prev = trace.steps[i - 1];
     const TraceStep& step = trace.steps[i];
-    const auto found = step_between(generator, prev.state.data(), step.state.data());
-    if (!found)
+    const auto found = steps_between(generator, prev.state.data(), step.state.data());
+    if (found.empty())
       return fail("step " + std::to_string(i) + " (" + step.action + ") is not a transition");
-    if (found->first != step.action)
-      return fail("step " + std::to_string(i) + " is labelled " + step.action + " but the model takes " +
-                  found->first);
-    if (step.time != prev.time + found->second)
+    const auto same = std::find_if(found.begin(), found.end(),
+                                   [&](const Step& s) { return s.action == step.action; });
+    if (same == found.end())
+      return fail("step " + std::to_string(i) + " is labelled " + step.action +
+                  " but no such step of the model leads there (it takes " + found.front().action +
+                  ")");
+    if (step.time != prev.time + same->duration)
       return fail("step " + std::to_string(i) + " has the wrong time");
   }
   if (trace.loop_start) {

@@ -30,11 +30,14 @@ struct Trace {
 // regenerating the parent's successors (the first one equal to the child).
 Trace trace_to(const tioa::SuccessorGenerator& generator, const Exploration& ex, StateId id);
 
-// Appends a step from the trace's last state to `next`; false when no step leads there.
-bool extend(const tioa::SuccessorGenerator& generator, Trace& trace, const Word* next);
+// Appends a step from the trace's last state to `next` (one that lasts `duration`, when
+// given: a tick and an action may lead to the same state); false when none leads there.
+bool extend(const tioa::SuccessorGenerator& generator, Trace& trace, const Word* next,
+            std::optional<std::uint32_t> duration = std::nullopt);
 
-// Checks that every step is a transition of the model, that times add up, and that a
-// lasso closes. `why` says what is wrong when it returns false.
+// Checks that the trace starts at time 0, that every step is a transition of the model
+// with its label, that times add up, and that a lasso closes. `why` says what is wrong when it
+// returns false.
 bool replay(const tioa::SuccessorGenerator& generator, const Trace& trace, std::string* why);
 
 // The state as (variable, value) pairs, in declaration order.

@@ -12,8 +12,7 @@ PropertyResult check_transitivity(const Automaton& system, const StatePredicate&
                                   const std::string& l1_name, const StatePredicate& l2,
                                   const std::string& l2_name, const ExploreOptions& options) {
   const PropertyResult first = check_stabilisation(system, l1, options);
-  const PropertyResult second =
-      check_stabilisation(tioa::Start(system, l1, l1_name), l2, options);
+  const PropertyResult second = check_stabilisation(tioa::Start(system, l1, l1_name), l2, options);
   const PropertyResult direct = check_stabilisation(system, l2, options);
 
   PropertyResult r;
@@ -37,11 +36,11 @@ PropertyResult check_transitivity(const Automaton& system, const StatePredicate&
     }
   if (first.verdict == Verdict::violated || second.verdict == Verdict::violated) {
     r.verdict = Verdict::holds;
-    r.message = "vacuous: a premise of Lemma 3.4 fails (" +
-                (first.verdict == Verdict::violated ? "start -> " + l1_name + ": " + first.message
-                                                    : l1_name + " -> " + l2_name + ": " +
-                                                          second.message) +
-                ")";
+    r.message =
+        "vacuous: a premise of Lemma 3.4 fails (" +
+        (first.verdict == Verdict::violated ? "start -> " + l1_name + ": " + first.message
+                                            : l1_name + " -> " + l2_name + ": " + second.message) +
+        ")";
     return r;
   }
   const std::uint64_t t1 = *first.worst_time, t2 = *second.worst_time;
@@ -56,8 +55,9 @@ PropertyResult check_transitivity(const Automaton& system, const StatePredicate&
   }
   r.verdict = Verdict::holds;
   r.worst_time = direct.worst_time;
-  r.message = "start -> " + l2_name + " in " + std::to_string(*direct.worst_time) + " <= t1 + t2 = " +
-              std::to_string(t1) + " + " + std::to_string(t2) + " " + r.time_unit;
+  r.message = "start -> " + l2_name + " in " + std::to_string(*direct.worst_time) +
+              " <= t1 + t2 = " + std::to_string(t1) + " + " + std::to_string(t2) + " " +
+              r.time_unit;
   return r;
 }
 

@@ -39,8 +39,8 @@ ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::
       std::string known;
       for (const auto& p : model.params)
         known += (known.empty() ? "" : ", ") + p.name;
-      throw UsageError("model '" + model.name + "' has no parameter '" + name + "' (it has: " +
-                       known + ")");
+      throw UsageError("model '" + model.name + "' has no parameter '" + name +
+                       "' (it has: " + known + ")");
     }
     std::int64_t value = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);

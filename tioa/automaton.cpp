@@ -53,8 +53,8 @@ Variable<int> Automaton::integer(const std::string& name, int lo, int hi,
   info.hi = hi;
   if (initial) {
     if (*initial < lo || *initial > hi)
-      throw ModelError("initial value of '" + name + "' is outside " + std::to_string(lo) +
-                       ".." + std::to_string(hi));
+      throw ModelError("initial value of '" + name + "' is outside " + std::to_string(lo) + ".." +
+                       std::to_string(hi));
     info.initial_code = static_cast<std::uint64_t>(*initial - lo);
   }
   return Variable<int>{declare(std::move(info))};

@@ -39,7 +39,9 @@ struct Transition {
   ChoiceEffect choice_effect; // one effect per choice, with
   ChoiceCount choices;        // the number of choices in this state (empty: 1)
 
-  bool enabled(const State& s, const Params& p) const { return !precondition || precondition(s, p); }
+  bool enabled(const State& s, const Params& p) const {
+    return !precondition || precondition(s, p);
+  }
   std::uint32_t choice_count(const State& s, const Params& p) const {
     return choices ? choices(s, p) : 1;
   }

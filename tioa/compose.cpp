@@ -43,8 +43,8 @@ void check_compatible(const std::vector<Automaton>& components) {
                              components[j].name() + "' both output '" + a.name + "'");
           if (a.kind == ActionKind::internal)
             throw ModelError("incompatible composition: internal action '" + a.name + "' of '" +
-                             components[i].name() + "' is an action of '" +
-                             components[j].name() + "'");
+                             components[i].name() + "' is an action of '" + components[j].name() +
+                             "'");
         }
     }
 }
@@ -66,7 +66,9 @@ Transition synchronised(std::vector<Participant> parts) {
   if (owner.transition.precondition) {
     auto guard = owner.transition.precondition;
     const std::uint32_t base = owner.base;
-    t.precondition = [guard, base](const State& s, const Params& p) { return guard(s.at(base), p); };
+    t.precondition = [guard, base](const State& s, const Params& p) {
+      return guard(s.at(base), p);
+    };
   }
   auto receives = [](const Participant& part, const Params& p) {
     return part.signature.kind != ActionKind::input || part.signature.contains(p);
@@ -107,8 +109,8 @@ Automaton compose(const std::string& name, const std::vector<Automaton>& compone
   if (components.empty())
     throw ModelError("composition '" + name + "' has no components");
   if (components.size() > max_components)
-    throw ModelError("composition '" + name + "' has more than " +
-                     std::to_string(max_components) + " components");
+    throw ModelError("composition '" + name + "' has more than " + std::to_string(max_components) +
+                     " components");
   check_compatible(components);
 
   Automaton out(name);
@@ -164,7 +166,8 @@ Automaton compose(const std::string& name, const std::vector<Automaton>& compone
       ActionSignature merged = parts.front().signature;
       for (const auto& part : parts) {
         if (part.signature.params.size() != merged.params.size())
-          throw ModelError("input '" + sig.name + "' has different arities in different components");
+          throw ModelError("input '" + sig.name +
+                           "' has different arities in different components");
         boxes.push_back(part.signature);
         for (std::size_t k = 0; k < merged.params.size(); ++k) {
           merged.params[k].lo = std::min(merged.params[k].lo, part.signature.params[k].lo);
@@ -235,17 +238,17 @@ Automaton compose(const std::string& name, const std::vector<Automaton>& compone
     starts->push_back({p.automaton->start(), p.base});
     description += (description.empty() ? "" : " × ") + p.automaton->start().description();
   }
-  out.set_start(StartSet(
-      "product of " + description, [starts](Word* words, std::uint32_t base, const StartSet::Visit& visit) {
-        std::function<void(std::size_t)> level = [&](std::size_t i) {
-          if (i == starts->size()) {
-            visit();
-            return;
-          }
-          (*starts)[i].start.enumerate(words, base + (*starts)[i].base, [&] { level(i + 1); });
-        };
-        level(0);
-      }));
+  out.set_start(StartSet("product of " + description, [starts](Word* words, std::uint32_t base,
+                                                               const StartSet::Visit& visit) {
+    std::function<void(std::size_t)> level = [&](std::size_t i) {
+      if (i == starts->size()) {
+        visit();
+        return;
+      }
+      (*starts)[i].start.enumerate(words, base + (*starts)[i].base, [&] { level(i + 1); });
+    };
+    level(0);
+  }));
   return out;
 }
 

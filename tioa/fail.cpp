@@ -59,7 +59,9 @@ Automaton Fail(const Automaton& a, FailActions names) {
       t.precondition = [original, failed](const State& s, const Params& p) {
         return !s[failed] && original.enabled(s, p);
       };
-      t.choices = [original](const State& s, const Params& p) { return original.choice_count(s, p); };
+      t.choices = [original](const State& s, const Params& p) {
+        return original.choice_count(s, p);
+      };
     }
     t.choice_effect = [original, failed](State& s, const Params& p, std::uint32_t choice) {
       if (!s[failed])
@@ -69,7 +71,7 @@ Automaton Fail(const Automaton& a, FailActions names) {
   }
 
   out.input(names.fail).eff([failed](State& s, const Params&) { s[failed] = true; }); // rule (3)
-  out.input(names.restart)                                                             // rule (4)
+  out.input(names.restart)                                                            // rule (4)
       .choose([failed, start_count](const State& s,
                                     const Params&) { return s[failed] ? start_count : 1u; },
               [failed, starts, bits, words](State& s, const Params&, std::uint32_t choice) {
@@ -95,15 +97,15 @@ Automaton Fail(const Automaton& a, FailActions names) {
   // Start: failed = false with a start state of A, or failed = true with anything.
   const StartSet a_start = a.start();
   const StartSet anything = StartSet::every_valuation(a.layout());
-  out.set_start(StartSet("Fail(" + a_start.description() + ")",
-                         [a_start, anything, failed](Word* w, std::uint32_t base,
-                                                     const StartSet::Visit& visit) {
-                           State s(w, base);
-                           s[failed] = false;
-                           a_start.enumerate(w, base, visit);
-                           s[failed] = true;
-                           anything.enumerate(w, base, visit);
-                         }));
+  out.set_start(StartSet(
+      "Fail(" + a_start.description() + ")",
+      [a_start, anything, failed](Word* w, std::uint32_t base, const StartSet::Visit& visit) {
+        State s(w, base);
+        s[failed] = false;
+        a_start.enumerate(w, base, visit);
+        s[failed] = true;
+        anything.enumerate(w, base, visit);
+      }));
   return out;
 }
 

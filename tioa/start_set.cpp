@@ -28,12 +28,11 @@ void enumerate_codes(const std::vector<VariableInfo>& vars, bool use_initial, st
 StartSet odometer(const StateLayout& layout, bool use_initial, StatePredicate keep,
                   std::string description) {
   auto vars = std::make_shared<std::vector<VariableInfo>>(layout.variables());
-  return StartSet(std::move(description),
-                  [vars, use_initial, keep](Word* words, std::uint32_t base,
-                                            const StartSet::Visit& visit) {
-                    State state(words, base);
-                    enumerate_codes(*vars, use_initial, 0, state, keep, visit);
-                  });
+  return StartSet(std::move(description), [vars, use_initial, keep](Word* words, std::uint32_t base,
+                                                                    const StartSet::Visit& visit) {
+    State state(words, base);
+    enumerate_codes(*vars, use_initial, 0, state, keep, visit);
+  });
 }
 
 } // namespace

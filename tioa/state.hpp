@@ -105,7 +105,9 @@ private:
   std::uint32_t base_;
 };
 
-template <class T> VariableRef<T>::operator T() const { return state_.template get<T>(slot_); }
+template <class T> VariableRef<T>::operator T() const {
+  return state_.template get<T>(slot_);
+}
 
 template <class T> VariableRef<T>& VariableRef<T>::operator=(T value) {
   state_.template set<T>(slot_, value);

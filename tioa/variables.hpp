@@ -20,8 +20,8 @@ enum class VariableKind { boolean, integer, enumeration, clock };
 struct Slot {
   std::uint32_t offset = 0;
   std::uint8_t width = 0;
-  bool has_bottom = false;       // code `value_codes` is ⊥
-  std::uint64_t mask = 0;        // (1 << width) - 1
+  bool has_bottom = false; // code `value_codes` is ⊥
+  std::uint64_t mask = 0;  // (1 << width) - 1
   std::int64_t lo = 0;
   std::uint64_t value_codes = 0; // number of codes for values (hi - lo + 1)
   const char* name = "";         // interned, for error messages
@@ -38,9 +38,7 @@ struct Slot {
 };
 
 // A typed handle on a state variable; T is bool, int, or an enum type.
-template <class T> struct Variable {
-  Slot slot;
-};
+template <class T> struct Variable { Slot slot; };
 
 // The ids an array of variables is indexed by: 0..count-1 by default, or the ids the
 // paper uses (ids(1, n) for processes 1..N), so that `loc[p]` reads as in the figure.

@@ -81,14 +81,23 @@ ModelInstance build_fischer(int n, int a, int b) {
   using checker::PropertyKind;
   ModelInstance m{f, {}, "1 time unit (A, B and the clocks are whole numbers of quanta)"};
   m.properties = {
-      {"mutex", "invariant: at most one process is in CS", PropertyKind::invariant,
+      {"mutex",
+       "invariant: at most one process is in CS",
+       PropertyKind::invariant,
        [=](const State& s) {
          return std::count_if(loc.begin(), loc.end(),
                               [&](const auto& l) { return s[l] == Loc::cs; }) <= 1;
        },
-       "at most one in CS", {}, ""},
-      {"no-timelock", "every reachable state has an action or a tick", PropertyKind::deadlock, {},
-       "", {}, ""},
+       "at most one in CS",
+       {},
+       ""},
+      {"no-timelock",
+       "every reachable state has an action or a tick",
+       PropertyKind::deadlock,
+       {},
+       "",
+       {},
+       ""},
   };
   return m;
 }
@@ -100,8 +109,9 @@ ModelDefinition fischer_definition() {
   d.params = {{"N", 3, 2, 12, "number of processes 1..N"},
               {"A", 1, 0, 30, "bound on the time from try to set (urgency)"},
               {"B", 2, 0, 30, "time a process waits before it checks id"}};
-  d.properties = {{"mutex", "invariant: at most one process is in CS"},
-                  {"no-timelock", "no reachable state where neither an action nor a tick is possible"}};
+  d.properties = {
+      {"mutex", "invariant: at most one process is in CS"},
+      {"no-timelock", "no reachable state where neither an action nor a tick is possible"}};
   d.build = [](const ParamValues& p) {
     return build_fischer(static_cast<int>(p.at("N")), static_cast<int>(p.at("A")),
                          static_cast<int>(p.at("B")));

@@ -393,7 +393,7 @@ TEST_CASE("compose: three components at once and nested compositions agree", "[t
 }
 
 TEST_CASE("compose: nesting agrees with a flat composition when merged input boxes have gaps",
-  "[tioa][compose]") {
+          "[tioa][compose]") {
   // Regression: a receives go(0), b receives go(2), c outputs go(1). Flat: go(1) happens
   // and reaches nobody; go(0) and go(2) stay inputs, driven by the environment. Nested:
   // a||b once had one input go over the merged box 0..2 that could not take go(1), which

@@ -1,0 +1,190 @@
+// The visited-state store (checker/state_store.hpp): dense ids in insertion order,
+// duplicates, growth, and states whose hash tags collide.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <map>
+#include <random>
+#include <unordered_map>
+#include <vector>
+
+#include "checker/state_store.hpp"
+
+using checker::hash_state;
+using checker::StateId;
+using checker::StateStore;
+using tioa::Word;
+using Words = std::vector<Word>;
+
+namespace {
+
+std::pair<StateId, bool> insert(StateStore& store, const Words& s) {
+  return store.insert(s.data(), hash_state(s.data(), store.words()));
+}
+
+std::optional<StateId> find(const StateStore& store, const Words& s) {
+  return store.find(s.data(), hash_state(s.data(), store.words()));
+}
+
+Words stored(const StateStore& store, StateId id) {
+  return Words(store.state(id), store.state(id) + store.words());
+}
+
+// Pairs of one-word states whose hashes have the same top 32 bits (the tag the table
+// keeps), found by a deterministic birthday search.
+std::vector<std::pair<Word, Word>> tag_collisions(std::size_t wanted) {
+  std::unordered_map<std::uint32_t, Word> seen;
+  std::vector<std::pair<Word, Word>> out;
+  for (Word w = 0; out.size() < wanted; ++w) {
+    const auto tag = static_cast<std::uint32_t>(hash_state(&w, 1) >> 32);
+    const auto [it, fresh] = seen.emplace(tag, w);
+    if (!fresh)
+      out.emplace_back(it->second, w);
+  }
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("hash_state depends on every word and on the length", "[checker][state_store]") {
+  const Words a{1, 2, 3}, b{1, 2, 4}, c{0, 2, 3};
+  CHECK(hash_state(a.data(), 3) == hash_state(Words{1, 2, 3}.data(), 3));
+  CHECK(hash_state(a.data(), 3) != hash_state(b.data(), 3));
+  CHECK(hash_state(a.data(), 3) != hash_state(c.data(), 3));
+  CHECK(hash_state(a.data(), 2) != hash_state(a.data(), 3));
+}
+
+TEST_CASE("insert and find", "[checker][state_store]") {
+  StateStore store(2);
+  CHECK(store.words() == 2);
+  CHECK(store.size() == 0);
+  const Words a{7, 0}, b{0, 7}, c{7, 7};
+  CHECK_FALSE(find(store, a));
+
+  CHECK(insert(store, a) == std::make_pair(StateId{0}, true));
+  CHECK(store.size() == 1);
+  CHECK(find(store, a) == StateId{0});
+  CHECK_FALSE(find(store, b));
+  CHECK(stored(store, 0) == a);
+
+  CHECK(insert(store, b) == std::make_pair(StateId{1}, true));
+  CHECK(insert(store, a) == std::make_pair(StateId{0}, false)); // a duplicate keeps its id
+  CHECK(insert(store, c) == std::make_pair(StateId{2}, true));
+  CHECK(store.size() == 3);
+  CHECK(find(store, b) == StateId{1});
+  CHECK(find(store, c) == StateId{2});
+  CHECK(stored(store, 1) == b);
+  CHECK(stored(store, 2) == c);
+}
+
+TEST_CASE("the all-zero state is a state like any other", "[checker][state_store]") {
+  // Empty table slots are 0: a zero state (and a zero hash) must not be mistaken for one.
+  StateStore store(1);
+  const Words zero{0};
+  CHECK(insert(store, zero) == std::make_pair(StateId{0}, true));
+  CHECK(find(store, zero) == StateId{0});
+  CHECK(insert(store, zero).second == false);
+  const Words one{1};
+  CHECK(store.insert(one.data(), 0) == std::make_pair(StateId{1}, true));
+  CHECK(store.find(one.data(), 0) == StateId{1});
+}
+
+TEST_CASE("ids are dense and in insertion order; duplicates change nothing",
+          "[checker][state_store]") {
+  StateStore store(1);
+  std::vector<Words> states;
+  for (Word w = 0; w < 5000; ++w)
+    states.push_back({w * 0x9e3779b97f4a7c15ull}); // distinct, scattered
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const auto [id, fresh] = insert(store, states[i]);
+    REQUIRE(fresh);
+    REQUIRE(id == i);
+  }
+  const std::size_t memory = store.memory_bytes();
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const auto [id, fresh] = insert(store, states[i]);
+    REQUIRE_FALSE(fresh);
+    REQUIRE(id == i);
+  }
+  CHECK(store.size() == states.size());
+  CHECK(store.memory_bytes() == memory);
+  for (std::size_t i = 0; i < states.size(); ++i)
+    REQUIRE(stored(store, static_cast<StateId>(i)) == states[i]);
+}
+
+TEST_CASE("growth past many rehashes keeps every id", "[checker][state_store]") {
+  // 10^5 random three-word states: the table (1024 slots at first) doubles about 8 times.
+  constexpr std::size_t count = 100000;
+  std::mt19937_64 random(20240611);
+  StateStore store(3);
+  std::map<Words, StateId> expected;
+  std::vector<Words> order;
+  const std::size_t initial_memory = store.memory_bytes();
+  while (order.size() < count) {
+    // Small words so that some draws repeat: duplicates are part of the workload.
+    const Words s{random() % 64, random() % 64, random() % 32};
+    const auto [it, fresh] = expected.emplace(s, static_cast<StateId>(expected.size()));
+    const auto [id, inserted] = insert(store, s);
+    REQUIRE(inserted == fresh);
+    REQUIRE(id == it->second);
+    order.push_back(s);
+  }
+  CHECK(store.size() == expected.size());
+  CHECK(expected.size() > 50000); // the workload mixes fresh states and duplicates
+  CHECK(expected.size() < count);
+  CHECK(store.memory_bytes() > initial_memory);
+  for (const auto& [s, id] : expected) {
+    REQUIRE(find(store, s) == id);
+    REQUIRE(stored(store, id) == s);
+  }
+  // States never inserted are not found (the third word is < 32 for every stored one).
+  for (Word w = 0; w < 1000; ++w)
+    REQUIRE_FALSE(find(store, Words{w % 64, w / 64, 32 + w % 7}));
+}
+
+TEST_CASE("states with equal hash tags stay apart", "[checker][state_store]") {
+  SECTION("the very same hash for different states") {
+    // The caller's hash decides the slot and the tag; equality is still by content.
+    StateStore store(2);
+    for (Word w = 0; w < 200; ++w) {
+      const Words s{w, ~w};
+      REQUIRE(store.insert(s.data(), 0x1234567800000000ull) ==
+              std::make_pair(static_cast<StateId>(w), true));
+    }
+    for (Word w = 0; w < 200; ++w) {
+      const Words s{w, ~w};
+      REQUIRE(store.find(s.data(), 0x1234567800000000ull) == static_cast<StateId>(w));
+      REQUIRE(store.insert(s.data(), 0x1234567800000000ull).second == false);
+    }
+    const Words absent{200, ~Word{200}};
+    CHECK_FALSE(store.find(absent.data(), 0x1234567800000000ull));
+  }
+
+  SECTION("real tag collisions of hash_state, through growth") {
+    const auto pairs = tag_collisions(12);
+    REQUIRE(pairs.size() == 12);
+    for (const auto& [a, b] : pairs) {
+      REQUIRE(a != b);
+      REQUIRE((hash_state(&a, 1) >> 32) == (hash_state(&b, 1) >> 32));
+    }
+    StateStore store(1);
+    std::vector<Word> order;
+    for (const auto& [a, b] : pairs) {
+      CHECK(insert(store, {a}).first == order.size());
+      order.push_back(a);
+      CHECK(find(store, {a}) == static_cast<StateId>(order.size() - 1));
+      CHECK_FALSE(find(store, {b})); // same tag, different state: not found
+      CHECK(insert(store, {b}).first == order.size());
+      order.push_back(b);
+    }
+    // Filler states make the table grow several times around the colliding pairs.
+    for (Word w = 0; order.size() < 20000; ++w) {
+      const Word filler = (w << 40) | 0xabcdefu;
+      if (insert(store, {filler}).second)
+        order.push_back(filler);
+    }
+    CHECK(store.size() == order.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+      REQUIRE(find(store, {order[i]}) == static_cast<StateId>(i));
+  }
+}

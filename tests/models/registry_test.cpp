@@ -1,0 +1,148 @@
+// The model registry (models/registry.hpp): every model builds, lists its properties
+// consistently and gives the suite's expected verdicts; parameters are checked.
+#include <catch2/catch.hpp>
+
+#include <set>
+
+#include "models/registry.hpp"
+
+using checker::Verdict;
+using models::UsageError;
+
+namespace {
+
+// The message of the UsageError that resolve_params throws, or a marker when none.
+std::string usage_error(const std::string& model, const std::vector<std::string>& settings) {
+  try {
+    models::resolve_params(models::find_model(model), settings);
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "<no UsageError>";
+}
+
+} // namespace
+
+TEST_CASE("registry: every model builds with its defaults and lists its properties",
+          "[models][registry]") {
+  const auto& all = models::all_models();
+  REQUIRE(all.size() >= 2);
+  std::set<std::string> names;
+  for (const auto& def : all) {
+    INFO("model " << def.name);
+    CHECK(names.insert(def.name).second); // names are unique
+    CHECK_FALSE(def.description.empty());
+    CHECK(&models::find_model(def.name) == &def);
+    for (const auto& p : def.params) {
+      CHECK(p.lo <= p.default_value);
+      CHECK(p.default_value <= p.hi);
+      CHECK_FALSE(p.description.empty());
+    }
+    const models::ParamValues defaults = models::resolve_params(def, {});
+    CHECK(defaults.size() == def.params.size());
+    for (const auto& p : def.params)
+      CHECK(defaults.at(p.name) == p.default_value);
+    const models::ModelInstance m = def.build(defaults);
+    std::vector<std::string> listed, built;
+    for (const auto& [name, description] : def.properties) {
+      listed.push_back(name);
+      CHECK_FALSE(description.empty());
+    }
+    for (const auto& p : m.properties)
+      built.push_back(p.name);
+    CHECK(listed == built);
+    CHECK(std::set<std::string>(listed.begin(), listed.end()).size() == listed.size());
+  }
+  CHECK(names.count("token-ring") == 1);
+  CHECK(names.count("fischer") == 1);
+}
+
+TEST_CASE("registry: every suite entry gives its expected verdict", "[models][registry][suite]") {
+  for (const auto& def : models::all_models()) {
+    CHECK_FALSE(def.suite.empty());
+    for (const auto& entry : def.suite) {
+      // The entry's values, on top of the defaults, go through the same checks as a user's.
+      std::vector<std::string> settings;
+      for (const auto& [name, value] : entry.params)
+        settings.push_back(name + "=" + std::to_string(value));
+      INFO("model " << def.name << ", property " << entry.property);
+      const models::ParamValues values = models::resolve_params(def, settings);
+      const models::ModelInstance m = def.build(values);
+      const checker::Property* property = nullptr;
+      for (const auto& p : m.properties)
+        if (p.name == entry.property)
+          property = &p;
+      REQUIRE(property);
+      const checker::PropertyResult r = checker::run_property(m.system, *property, {});
+      INFO(r.message);
+      CHECK(r.verdict == entry.expected);
+      if (r.verdict == Verdict::violated)
+        CHECK(r.trace);
+    }
+  }
+}
+
+TEST_CASE("registry: find_model names the known models when it fails", "[models][registry]") {
+  try {
+    models::find_model("fisher");
+    FAIL("no UsageError");
+  } catch (const UsageError& e) {
+    CHECK(std::string(e.what()) == "unknown model 'fisher' (known: token-ring, fischer)");
+  }
+}
+
+TEST_CASE("resolve_params: defaults and overrides", "[models][registry][params]") {
+  const auto& ring = models::find_model("token-ring");
+  CHECK(models::resolve_params(ring, {}) == models::ParamValues{{"N", 5}, {"K", 4}});
+  CHECK(models::resolve_params(ring, {"N=3"}) == models::ParamValues{{"N", 3}, {"K", 4}});
+  CHECK(models::resolve_params(ring, {"K=2", "N=7"}) == models::ParamValues{{"N", 7}, {"K", 2}});
+  CHECK(models::resolve_params(ring, {"N=3", "N=4"}) == models::ParamValues{{"N", 4}, {"K", 4}});
+  // The ends of each range are allowed.
+  CHECK(models::resolve_params(ring, {"N=2", "K=64"}).at("K") == 64);
+  const auto& fischer = models::find_model("fischer");
+  CHECK(models::resolve_params(fischer, {}) == models::ParamValues{{"N", 3}, {"A", 1}, {"B", 2}});
+  CHECK(models::resolve_params(fischer, {"A=0", "B=0"}) ==
+        models::ParamValues{{"N", 3}, {"A", 0}, {"B", 0}});
+  CHECK(models::resolve_params(fischer, {"B=-0"}).at("B") == 0);
+}
+
+TEST_CASE("resolve_params: bad settings are a UsageError with a clear message",
+          "[models][registry][params]") {
+  SECTION("unknown name") {
+    CHECK(usage_error("token-ring", {"M=3"}) ==
+          "model 'token-ring' has no parameter 'M' (it has: N, K)");
+    CHECK(usage_error("fischer", {"n=3"}) ==
+          "model 'fischer' has no parameter 'n' (it has: N, A, B)");
+  }
+  SECTION("not of the form name=value") {
+    CHECK(usage_error("token-ring", {"N"}) ==
+          "parameter setting 'N' is not of the form name=value");
+    CHECK(usage_error("token-ring", {"=3"}) ==
+          "parameter setting '=3' is not of the form name=value");
+    CHECK(usage_error("token-ring", {""}) == "parameter setting '' is not of the form name=value");
+  }
+  SECTION("malformed value") {
+    for (const std::string text : {"", "abc", "3.5", "3x", " 3", "3 ", "+3", "0x10", "1e2"})
+      CHECK(usage_error("token-ring", {"N=" + text}) ==
+            "parameter N: '" + text + "' is not a whole number");
+    CHECK(usage_error("token-ring", {"N=99999999999999999999"}) ==
+          "parameter N: '99999999999999999999' is not a whole number");
+  }
+  SECTION("out of range") {
+    CHECK(usage_error("token-ring", {"N=1"}) == "parameter N = 1 is out of range 2..20");
+    CHECK(usage_error("token-ring", {"N=21"}) == "parameter N = 21 is out of range 2..20");
+    CHECK(usage_error("token-ring", {"K=-1"}) == "parameter K = -1 is out of range 2..64");
+    CHECK(usage_error("fischer", {"N=13"}) == "parameter N = 13 is out of range 2..12");
+    CHECK(usage_error("fischer", {"B=31"}) == "parameter B = 31 is out of range 0..30");
+  }
+  SECTION("values that do not fit together") {
+    const std::string why = usage_error("token-ring", {"N=20", "K=64"});
+    CHECK(why.rfind("model 'token-ring': K^N = ", 0) == 0);
+    CHECK(why.find("more than the 2^32 the checker can store") != std::string::npos);
+    CHECK(usage_error("token-ring", {"N=12", "K=6"}) == "<no UsageError>"); // 6^12 = 2.2e9
+  }
+  SECTION("the first bad setting is the one reported") {
+    CHECK(usage_error("token-ring", {"N=3", "K=x", "M=1"}) ==
+          "parameter K: 'x' is not a whole number");
+  }
+}
