@@ -34,15 +34,37 @@ struct Candidate {
 };
 
 // What one thread produces while expanding its chunk of the frontier; reused each level.
+// A growable run of packed states that never shrinks: clear() keeps the memory, and
+// appending copies words without initialising them first.
+class StateBuffer {
+public:
+  explicit StateBuffer(std::uint32_t words) : words_(words) {}
+  void clear() { size_ = 0; }
+  void push(const Word* state) {
+    if (size_ + words_ > storage_.size())
+      storage_.resize(std::max<std::size_t>(2 * storage_.size(), 64 * words_));
+    for (std::uint32_t i = 0; i < words_; ++i)
+      storage_[size_ + i] = state[i];
+    size_ += words_;
+  }
+  const Word* operator[](std::size_t index) const { return storage_.data() + index * words_; }
+
+private:
+  std::uint32_t words_;
+  std::size_t size_ = 0;
+  std::vector<Word> storage_;
+};
+
 struct Pending {
   std::uint64_t hash;
   std::uint32_t duration;
 };
 
 struct Worker {
-  std::vector<Word> pending_states; // successors of the state being expanded
+  explicit Worker(std::uint32_t words) : pending_states(words), states(words) {}
+  StateBuffer pending_states; // successors of the state being expanded
   std::vector<Pending> pending;
-  std::vector<Word> states;
+  StateBuffer states;
   std::vector<Candidate> candidates;
   std::vector<Edge> edges;
   std::vector<StateId> stuck;
@@ -143,7 +165,7 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   } catch (const StopEnumeration&) {
   }
 
-  std::vector<Worker> workers(ex.threads);
+  std::vector<Worker> workers(ex.threads, Worker(words));
   for (auto& w : workers)
     w.scratch.assign(words + 1, 0);
   std::atomic<bool> out_of_time{false};
@@ -172,18 +194,18 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
             state, w.scratch.data(), [&](const Word* succ, const tioa::StepLabel& label) {
               const std::uint64_t h = hash_state(succ, words);
               ex.store.prefetch(h);
-              w.pending_states.insert(w.pending_states.end(), succ, succ + words);
+              w.pending_states.push(succ);
               w.pending.push_back({h, generator.duration(label)});
             });
         for (std::size_t k = 0; k < n; ++k) {
-          const Word* succ = w.pending_states.data() + k * words;
+          const Word* succ = w.pending_states[k];
           const Pending& p = w.pending[k];
           if (const auto known = ex.store.find(succ, p.hash)) {
             if (hooks.record_edges)
               w.edges.push_back({id, *known | timed_bit(p.duration)});
             continue;
           }
-          w.states.insert(w.states.end(), succ, succ + words);
+          w.states.push(succ);
           w.candidates.push_back({p.hash, id, static_cast<std::uint8_t>(p.duration),
                                   hooks.target && hooks.target(succ)});
         }
@@ -230,7 +252,7 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
         if (c + merge_prefetch_distance < w.candidates.size())
           ex.store.prefetch(w.candidates[c + merge_prefetch_distance].hash);
         const Candidate& cand = w.candidates[c];
-        const Word* succ = w.states.data() + c * words;
+        const Word* succ = w.states[c];
         if (at_state_limit(succ, cand.hash)) {
           stop(StopReason::state_limit);
           break;

@@ -1,5 +1,6 @@
 #include "checker/state_store.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace checker {
@@ -28,7 +29,11 @@ std::pair<StateId, bool> StateStore::insert(const Word* state, std::uint64_t has
   if (count_ >= max_states)
     throw std::length_error("state store is full (2^32 states)");
   const StateId id = static_cast<StateId>(count_++);
-  arena_.insert(arena_.end(), state, state + words_);
+  const std::size_t end = std::size_t{id} * words_;
+  if (end + words_ > arena_.size())
+    arena_.resize(std::max<std::size_t>(2 * arena_.size(), 1024 * words_));
+  for (std::uint32_t i = 0; i < words_; ++i)
+    arena_[end + i] = state[i];
   Word* slot = table_.data() + at * stride_;
   slot[0] = (tag << 32) | (std::uint64_t{id} + 1);
   for (std::uint32_t i = 0; i < words_; ++i)

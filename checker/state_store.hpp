@@ -75,7 +75,7 @@ private:
   std::uint32_t stride_; // words per slot: tag << 32 | (id + 1), then the state
   std::uint64_t count_ = 0;
   std::uint64_t mask_ = 0;
-  std::vector<Word> arena_;
+  std::vector<Word> arena_; // grows by doubling; only the first count_ states are used
   PageBuffer table_;
 };
 
