@@ -170,15 +170,20 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
     w.scratch.assign(words + 1, 0);
   std::atomic<bool> out_of_time{false};
 
+  std::size_t used = 1; // threads expanding the current level
   auto expand_chunk = [&](Worker& w, std::size_t begin, std::size_t end) {
     try {
       for (std::size_t i = begin; i < end; ++i) {
-        if (((i - begin) & 1023) == 1023 && limits.max_seconds > 0) {
-          if (out_of_time.load(std::memory_order_relaxed))
-            return;
-          if (progress.elapsed() > limits.max_seconds) {
-            out_of_time = true;
-            return;
+        if (((i - begin) & 1023) == 1023) {
+          if (&w == &workers.front()) // only the calling thread draws progress
+            progress.update(ex.store.size(), frontier.size() - (i - begin) * used, ex.depth);
+          if (limits.max_seconds > 0) {
+            if (out_of_time.load(std::memory_order_relaxed))
+              return;
+            if (progress.elapsed() > limits.max_seconds) {
+              out_of_time = true;
+              return;
+            }
           }
         }
         const StateId id = frontier[i];
@@ -221,7 +226,7 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   while (!frontier.empty() && !stopped) {
     // Phase 1: expand.
     const std::size_t n = frontier.size();
-    const std::size_t used = n < parallel_threshold ? 1 : workers.size();
+    used = n < parallel_threshold ? 1 : workers.size();
     for (std::size_t t = 0; t < used; ++t)
       workers[t].clear();
     std::vector<std::thread> threads;
