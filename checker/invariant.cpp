@@ -33,32 +33,4 @@ PropertyResult check_invariant(const Automaton& system, const StatePredicate& in
   return r;
 }
 
-PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& options) {
-  const tioa::SuccessorGenerator generator(system);
-  const Exploration ex = explore(generator, system.start(), options);
-  PropertyResult r;
-  r.kind = "deadlock";
-  r.states = ex.store.size();
-  r.edges = ex.edges;
-  r.depth = ex.depth;
-  r.seconds = ex.seconds;
-  r.threads = ex.threads;
-  r.time_unit = generator.timed() ? "quanta" : "steps";
-  const char* what = generator.timed() ? "time-lock" : "deadlock";
-  if (!ex.stuck.empty()) {
-    r.verdict = Verdict::violated;
-    r.trace = trace_to(generator, ex, ex.stuck.front());
-    r.trace_role = "counterexample";
-    r.trace_kind = what;
-    r.message = std::to_string(ex.stuck.size()) + " reachable states with no action" +
-                (generator.timed() ? " and no tick" : "") + " (" + what + ")";
-  } else if (!ex.complete()) {
-    mark_incomplete(r, ex, std::string("no ") + what + " in the states covered");
-  } else {
-    r.verdict = Verdict::holds;
-    r.message = std::string("no ") + what + " in " + std::to_string(r.states) + " reachable states";
-  }
-  return r;
-}
-
 } // namespace checker
