@@ -54,14 +54,6 @@ Automaton receiver(int timeout) {
   return a;
 }
 
-// A variable of a composite by its qualified name, e.g. "receiver.alive".
-template <class T> tioa::Variable<T> variable(const Automaton& system, const std::string& name) {
-  const tioa::VariableInfo* info = system.layout().find(name);
-  if (!info)
-    throw tioa::ModelError("no variable '" + name + "' in " + system.name());
-  return {info->slot()};
-}
-
 // The system, with and without an arbitrary start for the sender, and its two properties.
 struct Heartbeat {
   Automaton system;   // Fail(sender) || receiver, from their start states
@@ -75,10 +67,10 @@ Heartbeat build(int period, int timeout) {
   // §3.1 composition (beat: the sender's output drives the receiver's input); §3.3 U.
   Heartbeat h{.system = tioa::compose("heartbeat", {failing, receiver(timeout)}),
               .anywhere = tioa::compose("heartbeat", {tioa::U(failing), receiver(timeout)})};
-  const auto since = variable<int>(h.system, "sender.since");
-  const auto heard = variable<int>(h.system, "receiver.heard");
-  const auto failed = variable<bool>(h.system, "sender.failed");
-  const auto alive = variable<bool>(h.system, "receiver.alive");
+  const auto since = tioa::find_variable<int>(h.system, "sender.since");
+  const auto heard = tioa::find_variable<int>(h.system, "receiver.heard");
+  const auto failed = tioa::find_variable<bool>(h.system, "sender.failed");
+  const auto alive = tioa::find_variable<bool>(h.system, "receiver.alive");
   // The receiver suspects only a sender that failed, or restarted after the last beat it
   // heard (then heard > since).
   h.no_false_suspicion = [=](const State& s) {
