@@ -73,6 +73,26 @@ Transition synchronised(std::vector<Participant> parts) {
   auto receives = [](const Participant& part, const Params& p) {
     return part.signature.kind != ActionKind::input || part.signature.contains(p);
   };
+  auto deliver = [](const Participant& part, State& s, const Params& p, std::uint32_t choice) {
+    State local = s.at(part.base);
+    if (part.signature.kind == ActionKind::input && !part.transition.enabled(local, p))
+      throw ModelError("input '" + part.signature.label(p) + "' is not enabled in component '" +
+                       part.component + "' (TIOA requires input enabling)");
+    part.transition.apply(local, p, choice);
+  };
+  const bool deterministic =
+      std::none_of(shared->begin(), shared->end(), [](const Participant& part) {
+        return static_cast<bool>(part.transition.choices);
+      });
+  if (deterministic) {
+    // The common case: one successor, no choice counts to compute.
+    t.effect = [shared, receives, deliver](State& s, const Params& p) {
+      for (const auto& part : *shared)
+        if (receives(part, p))
+          deliver(part, s, p, 0);
+    };
+    return t;
+  }
   t.choices = [shared, receives](const State& s, const Params& p) {
     std::uint32_t count = 1;
     for (const auto& part : *shared)
@@ -80,7 +100,7 @@ Transition synchronised(std::vector<Participant> parts) {
         count *= part.transition.choice_count(s.at(part.base), p);
     return count;
   };
-  t.choice_effect = [shared, receives](State& s, const Params& p, std::uint32_t choice) {
+  t.choice_effect = [shared, receives, deliver](State& s, const Params& p, std::uint32_t choice) {
     // Choice counts are read before any effect runs, so all parts see the pre-state.
     std::uint32_t counts[max_components + 1];
     const std::size_t n = shared->size();
@@ -92,11 +112,7 @@ Transition synchronised(std::vector<Participant> parts) {
       const Participant& part = (*shared)[i];
       if (!receives(part, p))
         continue;
-      State local = s.at(part.base);
-      if (part.signature.kind == ActionKind::input && !part.transition.enabled(local, p))
-        throw ModelError("input '" + part.signature.label(p) + "' is not enabled in component '" +
-                         part.component + "' (TIOA requires input enabling)");
-      part.transition.apply(local, p, choice % counts[i]);
+      deliver(part, s, p, choice % counts[i]);
       choice /= counts[i];
     }
   };
