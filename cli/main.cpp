@@ -12,6 +12,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/exit_status.hpp"
+#include "cli/round.hpp"
 #include "models/registry.hpp"
 #include "tioa/errors.hpp"
 
@@ -138,7 +139,24 @@ int main(int argc, char** argv) {
       "suite", "run every model's suite against the expected verdicts (the CI run)");
   add_run_options(suite, settings, limits, trace, false);
 
-  for (CLI::App* command : {list, check, explore, suite})
+  cli::RoundRequest round_request;
+  CLI::App* round = app.add_subcommand(
+      "round", "the motion-coordination algorithm at round level on one configuration (JSON): "
+               "the next round's robots per region, or every round to the fixed point");
+  round->add_option("--config", round_request.config, "the configuration file ('-': stdin)")
+      ->type_name("FILE")
+      ->required();
+  round->add_flag("--json", round_request.json, "print one JSON object on stdout");
+  round->add_flag("--to-fixpoint", round_request.to_fixpoint,
+                  "every round to the fixed point, with T_out and T_stab");
+  round
+      ->add_option("--max-rounds", round_request.max_rounds,
+                   "with --to-fixpoint: give up (exit 3) when the counts still change in this "
+                   "round (default 100000)")
+      ->type_name("N")
+      ->check(whole_number);
+
+  for (CLI::App* command : {list, check, explore, suite, round})
     command->footer(exit_codes_help);
 
   try {
@@ -148,7 +166,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ExtrasError& e) {
     if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-')
       return fail(std::string("unknown command '") + argv[1] +
-                  "' (commands: list, check, explore, suite)");
+                  "' (commands: list, check, explore, suite, round)");
     return fail(std::string(e.what()) + " (see tioa-check --help)");
   } catch (const CLI::ParseError& e) {
     return fail(std::string(e.what()) + " (see tioa-check --help)");
@@ -156,7 +174,7 @@ int main(int argc, char** argv) {
 
   if (app.get_subcommands().empty()) {
     std::cout << app.help();
-    return fail("a command is required: list, check, explore or suite");
+    return fail("a command is required: list, check, explore, suite or round");
   }
 
   settings.limits.max_states = limits.max_states;
@@ -175,6 +193,8 @@ int main(int argc, char** argv) {
       return cli::command_check(request, settings);
     if (explore->parsed())
       return cli::command_explore(request, from, settings);
+    if (round->parsed())
+      return cli::command_round(round_request);
     return cli::command_suite(settings);
   } catch (const models::UsageError& e) {
     return fail(e.what());

@@ -1,6 +1,7 @@
 #include "models/mc/grid.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -8,8 +9,7 @@
 
 namespace mc {
 
-GridTiling::GridTiling(int m, Neighbourhood neighbourhood)
-    : m_(m), neighbourhood_(neighbourhood) {
+GridTiling::GridTiling(int m, Neighbourhood neighbourhood) : m_(m), neighbourhood_(neighbourhood) {
   if (m < 1 || m > 1000)
     throw std::invalid_argument("grid side m must be in 1..1000, not " + std::to_string(m));
   const std::size_t n = size();
@@ -31,16 +31,21 @@ GridTiling::GridTiling(int m, Neighbourhood neighbourhood)
         }
   for (auto& list : neighbours_)
     std::sort(list.begin(), list.end());
+}
 
-  distance_.assign(n * n, 0);
-  for (RegionId source = 0; source < n; ++source) {
-    std::vector<RegionId> hops(n, 0);
-    boost::breadth_first_search(
-        graph_, boost::vertex(source, graph_),
-        boost::visitor(boost::make_bfs_visitor(boost::record_distances(hops.data(), boost::on_tree_edge()))));
-    std::copy(hops.begin(), hops.end(), distance_.begin() + static_cast<std::ptrdiff_t>(source * n));
-    diameter_ = std::max(diameter_, *std::max_element(hops.begin(), hops.end()));
-  }
+RegionId GridTiling::reg_dist(RegionId u, RegionId v) const {
+  const Region a = region(u), b = region(v);
+  const int rows = std::abs(a.row - b.row), cols = std::abs(a.col - b.col);
+  return static_cast<RegionId>(neighbourhood_ == Neighbourhood::four ? rows + cols
+                                                                     : std::max(rows, cols));
+}
+
+std::vector<RegionId> GridTiling::hops_from(RegionId u) const {
+  std::vector<RegionId> hops(size(), 0);
+  boost::breadth_first_search(graph_, boost::vertex(u, graph_),
+                              boost::visitor(boost::make_bfs_visitor(
+                                  boost::record_distances(hops.data(), boost::on_tree_edge()))));
+  return hops;
 }
 
 std::vector<RegionId> GridTiling::nbrs_plus(RegionId u) const {

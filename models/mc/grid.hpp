@@ -8,7 +8,9 @@
 // Regions are numbered row by row: region u = row * m + col, row 0 at the top (the
 // matrices of `tioa-check round` are printed the same way). The region graph is a
 // Boost.Graph adjacency list; regDist(u, v) is the number of hops on a shortest path and
-// the diameter D the largest regDist.
+// the diameter D the largest regDist. On a grid both have closed forms (Manhattan
+// distance with 4 neighbours, Chebyshev with 8); hops_from() computes them the other way,
+// by breadth-first search on the graph, and the tests check that the two agree.
 
 #include <cstdint>
 #include <vector>
@@ -45,8 +47,10 @@ public:
   std::vector<RegionId> nbrs_plus(RegionId u) const;
   bool neighbours(RegionId u, RegionId v) const;
 
-  RegionId reg_dist(RegionId u, RegionId v) const { return distance_[u * size() + v]; }
-  RegionId diameter() const { return diameter_; }
+  RegionId reg_dist(RegionId u, RegionId v) const;
+  RegionId diameter() const { return reg_dist(0, static_cast<RegionId>(size() - 1)); }
+  // regDist from u to every region, by breadth-first search on the region graph.
+  std::vector<RegionId> hops_from(RegionId u) const;
   const Graph& graph() const { return graph_; }
 
 private:
@@ -54,8 +58,6 @@ private:
   Neighbourhood neighbourhood_;
   Graph graph_;
   std::vector<std::vector<RegionId>> neighbours_;
-  std::vector<RegionId> distance_; // size() × size(), by breadth-first search
-  RegionId diameter_ = 0;
 };
 
 } // namespace mc
