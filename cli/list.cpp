@@ -17,9 +17,11 @@ Json list_json() {
     Json params = Json::array();
     for (const auto& p : def.params)
       params.push_back(Json{{"name", p.name},
-                            {"default", p.default_value},
-                            {"lo", p.lo},
-                            {"hi", p.hi},
+                            {"kind", p.kind == models::ParamKind::integer ? "integer" : "rational"},
+                            {"default", param_json(p.default_value)},
+                            {"lo", param_json(p.lo)},
+                            {"hi", param_json(p.hi)},
+                            {"range", p.range()},
                             {"description", p.description}});
     Json properties = Json::array();
     for (const auto& [name, description] : def.properties)
@@ -42,14 +44,14 @@ void print_list_text() {
     std::size_t name_width = 0, default_width = 0, range_width = 0;
     for (const auto& p : def.params) {
       name_width = std::max(name_width, p.name.size());
-      default_width = std::max(default_width, std::to_string(p.default_value).size());
-      range_width = std::max(range_width, fmt::format("{}..{}", p.lo, p.hi).size());
+      default_width = std::max(default_width, p.default_value.text().size());
+      range_width = std::max(range_width, p.range().size());
     }
     std::cout << "  parameters:\n";
     for (const auto& p : def.params)
       std::cout << fmt::format("    {:<{}}  default {:<{}}  range {:<{}}  {}\n", p.name, name_width,
-                               p.default_value, default_width, fmt::format("{}..{}", p.lo, p.hi),
-                               range_width, p.description);
+                               p.default_value.text(), default_width, p.range(), range_width,
+                               p.description);
     std::size_t property_width = 0;
     for (const auto& property : def.properties)
       property_width = std::max(property_width, property.first.size());

@@ -13,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_status.hpp"
 #include "cli/round.hpp"
+#include "cli/simulate.hpp"
 #include "models/registry.hpp"
 #include "tioa/errors.hpp"
 
@@ -156,7 +157,10 @@ int main(int argc, char** argv) {
       ->type_name("N")
       ->check(whole_number);
 
-  for (CLI::App* command : {list, check, explore, suite, round})
+  cli::SimulateRequest simulate_request;
+  CLI::App* simulate = cli::add_simulate_command(app, simulate_request);
+
+  for (CLI::App* command : {list, check, explore, suite, round, simulate})
     command->footer(exit_codes_help);
 
   try {
@@ -166,7 +170,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ExtrasError& e) {
     if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-')
       return fail(std::string("unknown command '") + argv[1] +
-                  "' (commands: list, check, explore, suite, round)");
+                  "' (commands: list, check, explore, suite, round, simulate)");
     return fail(std::string(e.what()) + " (see tioa-check --help)");
   } catch (const CLI::ParseError& e) {
     return fail(std::string(e.what()) + " (see tioa-check --help)");
@@ -174,7 +178,7 @@ int main(int argc, char** argv) {
 
   if (app.get_subcommands().empty()) {
     std::cout << app.help();
-    return fail("a command is required: list, check, explore, suite or round");
+    return fail("a command is required: list, check, explore, suite, round or simulate");
   }
 
   settings.limits.max_states = limits.max_states;
@@ -195,6 +199,8 @@ int main(int argc, char** argv) {
       return cli::command_explore(request, from, settings);
     if (round->parsed())
       return cli::command_round(round_request);
+    if (simulate->parsed())
+      return cli::command_simulate(simulate_request);
     return cli::command_suite(settings);
   } catch (const models::UsageError& e) {
     return fail(e.what());

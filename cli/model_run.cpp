@@ -16,7 +16,7 @@ OrderedParams ordered_params(const models::ModelDefinition& model,
 std::vector<std::string> param_settings(const models::ParamValues& values) {
   std::vector<std::string> settings;
   for (const auto& [name, value] : values)
-    settings.push_back(name + "=" + std::to_string(value));
+    settings.push_back(name + "=" + value.text());
   return settings;
 }
 

@@ -15,7 +15,7 @@
 namespace cli {
 
 // Parameter values in the model's declaration order.
-using OrderedParams = std::vector<std::pair<std::string, std::int64_t>>;
+using OrderedParams = std::vector<std::pair<std::string, models::ParamValue>>;
 
 struct ModelRun {
   std::string model;

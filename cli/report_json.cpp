@@ -87,10 +87,16 @@ Json property_json(const ModelRun& run, const checker::PropertyResult& r, bool w
   return out;
 }
 
+Json param_json(const models::ParamValue& value) {
+  if (value.whole())
+    return value.integer();
+  return value.text();
+}
+
 Json params_json(const OrderedParams& params) {
   Json out = Json::object();
   for (const auto& [name, value] : params)
-    out[name] = value;
+    out[name] = param_json(value);
   return out;
 }
 

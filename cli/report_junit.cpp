@@ -104,7 +104,7 @@ JunitSuite junit_suite(const ModelRun& run, TraceMode trace) {
   JunitSuite suite;
   suite.name = run.model;
   for (const auto& [name, value] : run.params)
-    suite.properties.emplace_back("param." + name, std::to_string(value));
+    suite.properties.emplace_back("param." + name, value.text());
   if (!run.from.empty())
     suite.properties.emplace_back("from", run.from);
   for (const auto& r : run.results) {

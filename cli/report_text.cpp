@@ -50,7 +50,7 @@ std::string upper(std::string text) {
 std::string format_params(const OrderedParams& params) {
   std::string text;
   for (const auto& [name, value] : params)
-    text += (text.empty() ? "" : " ") + name + "=" + std::to_string(value);
+    text += (text.empty() ? "" : " ") + name + "=" + value.text();
   return text;
 }
 

@@ -3,12 +3,21 @@
 #include <charconv>
 
 #include "models/fischer/fischer.hpp"
+#include "models/mc/mc_round_model.hpp"
+#include "models/mc/rational.hpp"
 #include "models/token_ring/token_ring.hpp"
 
 namespace models {
 
+std::string ParamSpec::range() const {
+  if (kind == ParamKind::integer)
+    return lo.text() + ".." + hi.text();
+  return std::string(lo_open ? "(" : "[") + lo.text() + ", " + hi.text() + (hi_open ? ")" : "]");
+}
+
 const std::vector<ModelDefinition>& all_models() {
-  static const std::vector<ModelDefinition> models{token_ring_definition(), fischer_definition()};
+  static const std::vector<ModelDefinition> models{token_ring_definition(), fischer_definition(),
+                                                   mc_round_definition()};
   return models;
 }
 
@@ -42,13 +51,24 @@ ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::
       throw UsageError("model '" + model.name + "' has no parameter '" + name +
                        "' (it has: " + known + ")");
     }
-    std::int64_t value = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size() || text.empty())
-      throw UsageError("parameter " + name + ": '" + text + "' is not a whole number");
-    if (value < spec->lo || value > spec->hi)
-      throw UsageError("parameter " + name + " = " + text + " is out of range " +
-                       std::to_string(spec->lo) + ".." + std::to_string(spec->hi));
+    ParamValue value;
+    if (spec->kind == ParamKind::integer) {
+      std::int64_t whole = 0;
+      const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), whole);
+      if (error != std::errc() || end != text.data() + text.size() || text.empty())
+        throw UsageError("parameter " + name + ": '" + text + "' is not a whole number");
+      value = whole;
+    } else {
+      const auto rational = mc::parse_rational(text);
+      if (!rational)
+        throw UsageError("parameter " + name + ": '" + text +
+                         "' is not a rational number (write 9/10, 0.9 or 2)");
+      value = ParamValue(*rational);
+    }
+    const bool below = spec->lo_open ? value <= spec->lo : value < spec->lo;
+    const bool above = spec->hi_open ? value >= spec->hi : value > spec->hi;
+    if (below || above)
+      throw UsageError("parameter " + name + " = " + text + " is out of range " + spec->range());
     values[name] = value;
   }
   if (model.check_params)

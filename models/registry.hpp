@@ -10,19 +10,29 @@
 #include <vector>
 
 #include "checker/property.hpp"
+#include "models/param_value.hpp"
 #include "tioa/automaton.hpp"
 
 namespace models {
 
+enum class ParamKind { integer, rational };
+
+// A parameter: a whole number in lo..hi, or a rational ("9/10", "0.9", "2") in the
+// interval from lo to hi, each end closed or open (rho in (0, 1)).
 struct ParamSpec {
   std::string name;
-  std::int64_t default_value = 0;
-  std::int64_t lo = 0;
-  std::int64_t hi = 0;
+  ParamValue default_value = 0;
+  ParamValue lo = 0;
+  ParamValue hi = 0;
   std::string description;
+  ParamKind kind = ParamKind::integer;
+  bool lo_open = false;
+  bool hi_open = false;
+
+  std::string range() const; // "2..20", "(0, 1)"
 };
 
-using ParamValues = std::map<std::string, std::int64_t>;
+using ParamValues = std::map<std::string, ParamValue>;
 
 struct ModelInstance {
   tioa::Automaton system;

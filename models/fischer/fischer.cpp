@@ -113,8 +113,9 @@ ModelDefinition fischer_definition() {
       {"mutex", "invariant: at most one process is in CS"},
       {"no-timelock", "no reachable state where neither an action nor a tick is possible"}};
   d.build = [](const ParamValues& p) {
-    return build_fischer(static_cast<int>(p.at("N")), static_cast<int>(p.at("A")),
-                         static_cast<int>(p.at("B")));
+    return build_fischer(static_cast<int>(p.at("N").integer()),
+                         static_cast<int>(p.at("A").integer()),
+                         static_cast<int>(p.at("B").integer()));
   };
   using checker::Verdict;
   d.suite = {{{{"N", 6}, {"A", 1}, {"B", 2}}, "mutex", Verdict::holds},

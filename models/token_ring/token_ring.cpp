@@ -81,15 +81,17 @@ ModelDefinition token_ring_definition() {
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     // K^N states must fit the 2^32 ids of the state store.
     double states = 1;
-    for (int i = 0; i < p.at("N"); ++i)
-      states *= static_cast<double>(p.at("K"));
+    for (int i = 0; i < p.at("N").integer(); ++i)
+      states *= static_cast<double>(p.at("K").integer());
     if (states > 4e9)
-      return "K^N = " + std::to_string(p.at("K")) + "^" + std::to_string(p.at("N")) +
+      return "K^N = " + std::to_string(p.at("K").integer()) + "^" +
+             std::to_string(p.at("N").integer()) +
              " states is more than the 2^32 the checker can store";
     return std::nullopt;
   };
   d.build = [](const ParamValues& p) {
-    return build_token_ring(static_cast<int>(p.at("N")), static_cast<int>(p.at("K")));
+    return build_token_ring(static_cast<int>(p.at("N").integer()),
+                            static_cast<int>(p.at("K").integer()));
   };
   using checker::Verdict;
   d.suite = {{{{"N", 5}, {"K", 4}}, "some-privileged", Verdict::holds},

@@ -64,7 +64,7 @@ TEST_CASE("registry: every suite entry gives its expected verdict", "[models][re
       // The entry's values, on top of the defaults, go through the same checks as a user's.
       std::vector<std::string> settings;
       for (const auto& [name, value] : entry.params)
-        settings.push_back(name + "=" + std::to_string(value));
+        settings.push_back(name + "=" + value.text());
       INFO("model " << def.name << ", property " << entry.property);
       const models::ParamValues values = models::resolve_params(def, settings);
       const models::ModelInstance m = def.build(values);
@@ -87,7 +87,7 @@ TEST_CASE("registry: find_model names the known models when it fails", "[models]
     models::find_model("fisher");
     FAIL("no UsageError");
   } catch (const UsageError& e) {
-    CHECK(std::string(e.what()) == "unknown model 'fisher' (known: token-ring, fischer)");
+    CHECK(std::string(e.what()) == "unknown model 'fisher' (known: token-ring, fischer, mc-round)");
   }
 }
 

@@ -1,0 +1,39 @@
+#pragma once
+// `tioa-check simulate`: the Matlab simulation of seed 002 §VII at round level
+// (models/mc/simulation.hpp): T_out and T_stab for a range of m and the curves C1–C3, the
+// paper's claim about C2, and with --out the CSV and the figures 8 and 9 as SVG.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace cli {
+
+struct SimulateRequest {
+  std::string out; // a directory; empty: write no files
+  int m_from = 10;
+  int m_to = 20;
+  std::vector<std::string> curves{"C1", "C2", "C3"};
+  std::int64_t robots = 100'000;
+  std::int64_t e = 5;
+  std::string rho2 = "9/10";
+  std::string sigma = "1/4";
+  int nbh = 4;
+  std::optional<int> fig8_m; // default: 10 when in the range, else m_from
+  std::string dominance = "9/10";
+  std::int64_t max_rounds = 100'000;
+  bool json = false;
+};
+
+// Registers the subcommand and its options on `app`.
+CLI::App* add_simulate_command(CLI::App& app, SimulateRequest& request);
+
+// Exit codes: 0 done (the claim holds, or C2 is not in the sweep); 1 the claim about C2 does
+// not hold; 3 a run did not reach its fixed point within --max-rounds (one line on stderr).
+// Throws models::UsageError on bad values (one line).
+int command_simulate(const SimulateRequest& request);
+
+} // namespace cli
