@@ -12,6 +12,8 @@ const char* to_string(PropertyKind kind) {
     return "stabilisation";
   case PropertyKind::transitivity:
     return "transitivity";
+  case PropertyKind::custom:
+    return "custom";
   default:
     return "deadlock";
   }
@@ -38,6 +40,9 @@ PropertyResult run_property(const Automaton& system, const Property& property,
     break;
   case PropertyKind::deadlock:
     result = check_no_deadlock(system, named);
+    break;
+  case PropertyKind::custom:
+    result = property.run(named);
     break;
   }
   result.name = property.name;

@@ -2,13 +2,14 @@
 // A named property of a model, as the command line and the suite see it, and the one
 // function that runs it with the right check.
 
+#include <functional>
 #include <string>
 
 #include "checker/checks.hpp"
 
 namespace checker {
 
-enum class PropertyKind { invariant, legal_set, stabilisation, transitivity, deadlock };
+enum class PropertyKind { invariant, legal_set, stabilisation, transitivity, deadlock, custom };
 
 const char* to_string(PropertyKind kind);
 
@@ -20,6 +21,8 @@ struct Property {
   std::string predicate_name;
   StatePredicate first; // transitivity: the intermediate legal set L1
   std::string first_name;
+  // custom: a check of its own (e.g. a lemma over a family of instances, proofs/).
+  std::function<PropertyResult(const ExploreOptions&)> run = {};
 };
 
 PropertyResult run_property(const Automaton& system, const Property& property,

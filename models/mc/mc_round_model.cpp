@@ -1,6 +1,8 @@
 #include "models/mc/mc_round_model.hpp"
 
 #include "models/mc/round_automaton.hpp"
+#include "proofs/lemma_6_1.hpp"
+#include "proofs/lemma_6_4.hpp"
 
 namespace models {
 
@@ -46,9 +48,13 @@ ModelDefinition mc_round_definition() {
        true},
       {"n", 4, 0, 6, "robots per region at the start: every distribution of 0..n per region"},
       {"curve", 1, 0, 3, "q per region: 0 none, 1 top row, 2 two regions with q 1 and 3, 3 all"}};
-  d.properties = {{"fixpoint",
-                   "every run reaches a fixed point of the round (the sets become fixed, "
-                   "seed 000 Lemmas 6.5-6.6); worst-case rounds with a witness"}};
+  d.properties = {
+      {"fixpoint", "every run reaches a fixed point of the round (the sets become fixed, "
+                   "seed 000 Lemmas 6.5-6.6); worst-case rounds with a witness"},
+      {"lemma-6.1", "seed 000 Lemma 6.1 (conference Lemma 1, parts 1-5) over the family of "
+                    "proofs/ for this nbh and grids up to m; every order of lower"},
+      {"lemma-6.4", "seed 000 Lemma 6.4 (conference Lemma 2, parts 1-2, with the sigma/q_max^2 "
+                    "step) over the family of proofs/ for this nbh and grids up to m"}};
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     if (p.at("nbh") != 4 && p.at("nbh") != 8)
       return "nbh must be 4 or 8, not " + p.at("nbh").text();
@@ -81,6 +87,18 @@ ModelDefinition mc_round_definition() {
       const auto next = sys->all_next(counts);
       return next.size() == 1 && next.front() == counts;
     };
+    // The lemma checks run over a family of instances (proofs/family.hpp): the standard
+    // family for this neighbourhood, its grids up to m. k, rho2, n and curve choose the
+    // automaton above; the family covers several of each (its report says which).
+    proofs::Family family = proofs::Family::standard(grid.neighbourhood());
+    std::erase_if(family.sides, [&](const proofs::Side& side) { return side.m > grid.m(); });
+    auto lemma = [family](auto check) {
+      return [family, check](const checker::ExploreOptions& options) {
+        proofs::CheckOptions check_options;
+        check_options.threads = options.threads;
+        return check(family, check_options).result;
+      };
+    };
     using checker::PropertyKind;
     ModelInstance m{round.automaton, {}, ""};
     m.properties = {{"fixpoint",
@@ -89,12 +107,36 @@ ModelDefinition mc_round_definition() {
                      fixed,
                      "a fixed point",
                      {},
-                     ""}};
+                     ""},
+                    {"lemma-6.1",
+                     "Lemma 6.1 (conference Lemma 1) over the family",
+                     PropertyKind::custom,
+                     {},
+                     "",
+                     {},
+                     "",
+                     lemma([](const proofs::Family& f, const proofs::CheckOptions& o) {
+                       return proofs::check_lemma_6_1(f, o);
+                     })},
+                    {"lemma-6.4",
+                     "Lemma 6.4 (conference Lemma 2) over the family",
+                     PropertyKind::custom,
+                     {},
+                     "",
+                     {},
+                     "",
+                     lemma([](const proofs::Family& f, const proofs::CheckOptions& o) {
+                       return proofs::check_lemma_6_4(f, o);
+                     })}};
     return m;
   };
   using checker::Verdict;
   d.suite = {{{{"m", 2}, {"nbh", 8}, {"n", 6}, {"curve", 2}}, "fixpoint", Verdict::holds},
-             {{{"m", 2}, {"nbh", 4}, {"n", 6}, {"curve", 2}}, "fixpoint", Verdict::holds}};
+             {{{"m", 2}, {"nbh", 4}, {"n", 6}, {"curve", 2}}, "fixpoint", Verdict::holds},
+             {{{"m", 2}, {"nbh", 4}}, "lemma-6.1", Verdict::holds},
+             // A finding: conference Lemma 2(2) fails on a 2×2 grid with 5 robots (see
+             // proofs/README.md); the journal's Lemma 6.4(2) holds there.
+             {{{"m", 2}, {"nbh", 4}}, "lemma-6.4", Verdict::violated}};
   return d;
 }
 

@@ -73,7 +73,7 @@ TEST_CASE("family: the symmetries of the square", "[proofs][family]") {
   }
   // Which symmetries fix each curve on 3×3.
   const std::map<std::string, std::size_t> expected{
-      {"none", 8}, {"point", 8}, {"line", 4},     {"L", 2},           {"ring", 8},
+      {"none", 8}, {"point", 8},    {"line", 4},        {"L", 2},    {"ring", 8},
       {"all", 8},  {"line-1-3", 4}, {"checker-1-3", 8}, {"hub-3", 8}};
   for (const auto& [name, size] : expected)
     CHECK(symmetries_fixing(3, curve_q(name, 3)).size() == size);
@@ -95,8 +95,8 @@ TEST_CASE("family: one configuration per orbit, as many as Burnside counts", "[p
       s.q = curve_q(name, m);
       s.max_count = m == 3 ? 2 : 3;
       std::uint64_t represented = 0;
-      const Coverage c =
-          for_each_configuration(s, true, [&](const Counts&, std::uint64_t orbit) { represented += orbit; });
+      const Coverage c = for_each_configuration(
+          s, true, [&](const Counts&, std::uint64_t orbit) { represented += orbit; });
       const auto regions = static_cast<std::uint64_t>(m * m);
       std::uint64_t all = 1;
       for (std::uint64_t i = 0; i < regions; ++i)
@@ -127,7 +127,8 @@ TEST_CASE("family: settings, merged curves and the description", "[proofs][famil
                            "line = point (m = 1)", "L = point (m = 1)", "ring = point (m = 1)",
                            "all = point (m = 1)", "line-1-3 = point (m = 1)",
                            "checker-1-3 = point (m = 1)", "all = ring (m = 2)"});
-  CHECK(describe(list.settings.back()) == "m = 3, neighbourhood 8, curve hub-3, k = 1, rho2 = 9/10");
+  CHECK(describe(list.settings.back()) ==
+        "m = 3, neighbourhood 8, curve hub-3, k = 1, rho2 = 9/10");
   const std::string text = describe(f);
   CHECK_THAT(text, Catch::Contains("m in {1 (counts 0..3), 2 (counts 0..3), 3 (counts 0..1)}"));
   CHECK_THAT(text, Catch::Contains("neighbourhood 8"));
@@ -155,6 +156,7 @@ TEST_CASE("family: bad families are refused", "[proofs][family]") {
 }
 
 TEST_CASE("family: matrices print row by row", "[proofs][family]") {
-  CHECK(matrix_lines(2, {0, 12, 3, 0}, "  ", true) == std::vector<std::string>{"   . 12", "   3  ."});
+  CHECK(matrix_lines(2, {0, 12, 3, 0}, "  ", true) ==
+        std::vector<std::string>{"   . 12", "   3  ."});
   CHECK(region_name(3, 5) == "(1,2)");
 }

@@ -29,7 +29,7 @@ TEST_CASE("lemma 6.1: every part holds on a small family, both neighbourhoods",
     std::uint64_t instances, skipped, outcomes;
   };
   for (const Row& row : {Row{mc::Neighbourhood::four, 162'488, 566'148, 162'530},
-                        Row{mc::Neighbourhood::eight, 162'488, 566'148, 162'515}}) {
+                         Row{mc::Neighbourhood::eight, 162'488, 566'148, 162'515}}) {
     const LemmaCheck check = check_lemma_6_1(small_family(row.nbh));
     INFO("neighbourhood " << to_string(row.nbh));
     CHECK(check.result.name == "lemma-6.1");

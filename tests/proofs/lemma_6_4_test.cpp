@@ -116,9 +116,8 @@ TEST_CASE("lemma 6.4: the sigma/q_max^2 step is decided exactly", "[proofs][lemm
   CHECK(check.claim("L2(2) sigma step (as stated)").verdict() == checker::Verdict::holds);
   CHECK(check.claim("L2(2) sigma step (as used)").verdict() == checker::Verdict::holds);
   CHECK(check.claim("L2(2) sigma step (as stated)").premise > 1000);
-  // The conference's gap sigma/q_max^2 is met with equality and not exceeded: y_g(t+1)/q_g =
-  // y_h/q_h − 1/q_max^2 is allowed. 1×2 is not a square; on 2×2 with q = 1 everywhere, g = 1,
-  // h = 2 and nobody sending: y_g(t+1) = 1 = 2 − 1.
+  // Equality is allowed: on 2×2 with q = 1 everywhere and k = 2 nobody sends; g = (0,0) with
+  // 1 robot, h = (0,1) with 2: y_g(t+1)/q_g = 1 = y_h/q_h − sigma/q_max^2 exactly.
   const auto exact = instance(2, mc::Neighbourhood::four, {1, 1, 1, 1}, {1, 2, 1, 1}, 2);
   CHECK(!find_violation(lemma_6_4(), index_of("L2(2)"), exact));
 }

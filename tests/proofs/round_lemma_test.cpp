@@ -80,7 +80,8 @@ TEST_CASE("round lemmas: the random search is reproducible from its seed", "[pro
   options.seed = 2;
   const LemmaCheck other = search_lemma_6_4(options);
   CHECK(other.result.figures != a.result.figures);
-  CHECK_THAT(a.result.figures.front().second, Catch::Contains("random search, seed 1, 300 samples"));
+  CHECK_THAT(a.result.figures.front().second,
+             Catch::Contains("random search, seed 1, 300 samples"));
 }
 
 TEST_CASE("round lemmas: beyond the outcome limit the search samples outcomes, reproducibly",
@@ -140,7 +141,8 @@ TEST_CASE("round lemmas: the counterexample prints as the instance, both rounds 
   REQUIRE(found);
   CHECK(found->lines() ==
         std::vector<std::string>{
-            "counterexample to L2(2): m = 2, neighbourhood 4, curve line, k = 1, rho2 = 1/2; 5 robots",
+            "counterexample to L2(2): m = 2, neighbourhood 4, curve line, k = 1, rho2 = 1/2; 5 "
+            "robots",
             "  q (units of sigma; . = off the curve):",
             "    . .",
             "    1 1",

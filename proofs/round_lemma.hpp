@@ -1,0 +1,174 @@
+#pragma once
+// What the one-step lemmas (6.1, 6.4) share: a lemma is a list of claims about one round
+// t -> t+1 of the round-level system (models/mc/round.hpp) and a function that evaluates
+// them on one outcome of the round. This file runs such a lemma
+//
+//   - exhaustively over a Family (proofs/family.hpp): every instance, every outcome of
+//     RoundSystem::all_flows (every order of every lower set), and keeps for each claim the
+//     smallest counterexample (fewest robots, then smallest grid, then the first in
+//     enumeration order);
+//   - as a seeded random search over larger instances, with every counterexample it finds
+//     shrunk (smaller grid, fewer robots, smaller k and q) to a small one;
+//
+// and turns the outcome into a checker::PropertyResult (name, kind "round-lemma", verdict,
+// states = instances, edges = (instance, outcome) pairs, figures, notes) with the
+// counterexample printed line by line in `notes`.
+//
+// Claims of two kinds: the lemma's statements (conference and journal, which differ), which
+// decide the verdict, and steps of the paper's proof, reported beside them so that a
+// failing statement shows which step breaks (they do not decide the verdict).
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "checker/result.hpp"
+#include "models/mc/round.hpp"
+#include "proofs/family.hpp"
+
+namespace proofs {
+
+// One round t -> t+1: the counts at t, one outcome of the round, the counts at t+1.
+struct RoundStep {
+  const mc::RoundSystem& system;
+  const Counts& before; // M_t
+  const mc::Flow& flow; // one element of all_flows(M_t)
+  const Counts& after;  // M_{t+1} = flow.apply(M_t)
+};
+
+struct Claim {
+  std::string id;              // "6.1(1)", "L2(2)", "L2(2) step: ..."
+  std::string statement;       // one line
+  std::string source;          // "seed 000 line 1044; seed 002 line 246"
+  bool decides_verdict = true; // false: a step of the paper's proof, reported only
+  // Only rounds inside the journal's window t ∈ [t2, …] (seed 000 Lemmas 6.2, 6.3): a
+  // failure counts when RoundLemma::confirm_window places the round in such a window.
+  bool journal_window = false;
+};
+
+// One claim on one round.
+struct ClaimOutcome {
+  std::uint64_t premise = 0;          // how many times its premise was met (regions, pairs)
+  std::optional<std::string> failure; // why it fails, in one line (the first failure)
+};
+
+struct RoundLemma {
+  std::string name;        // "lemma-6.1"
+  std::string description; // one line
+  std::vector<Claim> claims;
+  // Fills out[i] for claims[i]; out has claims.size() elements, reset by the caller.
+  std::function<void(const RoundStep&, std::vector<ClaimOutcome>& out)> evaluate;
+  // For journal_window claims: nullopt when the round is shown to lie in a window, else
+  // why not. Needed only when some claim has journal_window.
+  std::function<std::optional<std::string>(const RoundStep&)> confirm_window;
+};
+
+// A violation of one claim in one round, printable.
+struct RoundCounterexample {
+  std::string claim; // Claim::id
+  Setting setting;
+  Counts before;
+  mc::Flow flow;
+  Counts after;
+  std::string why;
+
+  RobotCount robots() const { return mc::total(before); }
+  // The instance, the counts at t, the flow, the counts at t+1 and why the claim fails.
+  std::vector<std::string> lines() const;
+};
+
+struct ClaimTally {
+  Claim claim;
+  std::uint64_t premise = 0;    // premise met, over the instances checked
+  std::uint64_t violations = 0; // (instance, outcome) pairs where it fails
+  // Weighted by each instance's orbit size: the same figures for the unreduced family.
+  std::uint64_t premise_represented = 0;
+  std::uint64_t violations_represented = 0;
+  // journal_window claims: failures on rounds not shown to lie in a window (not violations).
+  std::uint64_t outside_window = 0;
+  std::optional<RoundCounterexample> smallest;
+
+  // violated when a violation was found; incomplete when the only failures lie outside a
+  // known window; holds otherwise.
+  checker::Verdict verdict() const;
+  std::string summary() const; // "holds (premise met 123 times)", "violated in 4 of …"
+};
+
+struct LemmaCheck {
+  checker::PropertyResult result;
+  std::vector<ClaimTally> claims;
+  std::uint64_t instances = 0;            // instances checked
+  std::uint64_t skipped = 0;              // symmetric duplicates skipped
+  std::uint64_t represented = 0;          // configurations of the unreduced family
+  std::uint64_t outcomes = 0;             // (instance, outcome) pairs checked
+  std::uint64_t outcomes_represented = 0; // weighted by orbit size
+  std::uint64_t sampled_outcome_instances =
+      0; // random search: instances whose outcomes were sampled
+  // The smallest counterexample over the claims that decide the verdict.
+  std::optional<RoundCounterexample> counterexample;
+
+  // Throws std::out_of_range for an unknown id.
+  const ClaimTally& claim(std::string_view id) const;
+};
+
+struct CheckOptions {
+  unsigned threads = 1;                // settings are split between threads; same results
+  std::size_t outcome_limit = 100'000; // all_flows limit per instance
+};
+
+// Every instance of the family, every outcome of its round.
+LemmaCheck check_family(const RoundLemma& lemma, const Family& family,
+                        const CheckOptions& options = {});
+
+struct SearchOptions {
+  std::uint64_t seed = 1;
+  std::uint64_t samples = 20'000;
+  mc::Neighbourhood neighbourhood = mc::Neighbourhood::four;
+  int min_side = 2;
+  int max_side = 5;
+  RobotCount max_count = 500; // a region holds 0..max_count robots (see README for the mix)
+  std::vector<RobotCount> ks{1, 2, 3};
+  std::vector<mc::Rational> rho2s{{1, 2}, {9, 10}, {1, 10}, {2, 3}};
+  // More combinations of per-region outcomes than this: check `sampled_outcomes` of them,
+  // drawn from the seeded generator, and the default order.
+  std::size_t outcome_limit = 4'096;
+  std::size_t sampled_outcomes = 64;
+  bool shrink = true;
+};
+
+// A seeded random search; its verdict is never a plain "holds" (see README).
+LemmaCheck search_random(const RoundLemma& lemma, const SearchOptions& options);
+
+// The first outcome of the instance's round on which claims[claim] fails (for a
+// journal_window claim: a failure inside a confirmed window), in all_flows order; when there
+// are more than outcome_limit outcomes, `sampled` of them from a fixed seed, and the default.
+std::optional<RoundCounterexample> find_violation(const RoundLemma& lemma, std::size_t claim,
+                                                  const Instance& instance,
+                                                  std::size_t outcome_limit = 4'096,
+                                                  std::size_t sampled = 64);
+
+// Shrinks a counterexample of claims[claim] while it stays one, greedily, until nothing
+// shrinks: remove a row and a column; scale every count down together; lower a group of
+// counts (all, those on the curve, those off it) by the same amount; lower the regions of
+// one count together; lower each count alone (to 0, then by halves, then by 1); lower k;
+// lower each q (to 0, then by 1). Deterministic.
+RoundCounterexample shrink(const RoundLemma& lemma, std::size_t claim,
+                           const RoundCounterexample& start, std::size_t outcome_limit = 4'096,
+                           std::size_t sampled = 64);
+
+// A small, fixed, portable generator (SplitMix64) for the search.
+class SplitMix64 {
+public:
+  explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t next();
+  // Uniform in 0..bound-1 (bound >= 1), by rejection: the same numbers on every platform.
+  std::uint64_t below(std::uint64_t bound);
+
+private:
+  std::uint64_t state_;
+};
+
+} // namespace proofs
