@@ -3,6 +3,9 @@
 #include "models/mc/round_automaton.hpp"
 #include "proofs/lemma_6_1.hpp"
 #include "proofs/lemma_6_4.hpp"
+#include "proofs/lemma_6_5.hpp"
+#include "proofs/lemma_6_6.hpp"
+#include "proofs/lemma_6_7.hpp"
 
 namespace models {
 
@@ -54,7 +57,16 @@ ModelDefinition mc_round_definition() {
       {"lemma-6.1", "seed 000 Lemma 6.1 (conference Lemma 1, parts 1-5) over the family of "
                     "proofs/ for this nbh and grids up to m; every order of lower"},
       {"lemma-6.4", "seed 000 Lemma 6.4 (conference Lemma 2, parts 1-2, with the sigma/q_max^2 "
-                    "step) over the family of proofs/ for this nbh and grids up to m"}};
+                    "step) over the family of proofs/ for this nbh and grids up to m"},
+      {"lemma-6.5", "seed 000 Lemma 6.5 (conference Lemma 3): measured T_out beside the journal's "
+                    "bound, every run to the fixed point (default order) of the fixed-point "
+                    "family of proofs/ for this nbh and grids up to m"},
+      {"lemma-6.6", "seed 000 Lemma 6.6 (conference Lemmas 4 and 5): measured T_stab and |C_out| "
+                    "beside the bounds, over the fixed-point family for this nbh and grids up "
+                    "to m"},
+      {"lemma-6.7", "seed 000 Lemma 6.7 (conference Lemma 6): measured worst |y_u/q_u - y_v/q_v| "
+                    "at the fixed point beside 10(2m-1)/(q_min rho2), over the fixed-point "
+                    "family for this nbh and grids up to m"}};
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     if (p.at("nbh") != 4 && p.at("nbh") != 8)
       return "nbh must be 4 or 8, not " + p.at("nbh").text();
@@ -99,6 +111,17 @@ ModelDefinition mc_round_definition() {
         return check(family, check_options).result;
       };
     };
+    // The lemmas about runs to the fixed point use the smaller fixed-point family.
+    proofs::Family fixpoint_family = proofs::fixpoint_family(grid.neighbourhood());
+    std::erase_if(fixpoint_family.sides,
+                  [&](const proofs::Side& side) { return side.m > grid.m(); });
+    auto fixpoint_lemma = [fixpoint_family](auto check) {
+      return [fixpoint_family, check](const checker::ExploreOptions& options) {
+        proofs::CheckOptions check_options;
+        check_options.threads = options.threads;
+        return check(fixpoint_family, check_options).result;
+      };
+    };
     using checker::PropertyKind;
     ModelInstance m{round.automaton, {}, ""};
     m.properties = {{"fixpoint",
@@ -127,6 +150,36 @@ ModelDefinition mc_round_definition() {
                      "",
                      lemma([](const proofs::Family& f, const proofs::CheckOptions& o) {
                        return proofs::check_lemma_6_4(f, o);
+                     })},
+                    {"lemma-6.5",
+                     "Lemma 6.5 (conference Lemma 3): T_out beside its bound",
+                     PropertyKind::custom,
+                     {},
+                     "",
+                     {},
+                     "",
+                     fixpoint_lemma([](const proofs::Family& f, const proofs::CheckOptions& o) {
+                       return proofs::check_lemma_6_5(f, o);
+                     })},
+                    {"lemma-6.6",
+                     "Lemma 6.6 (conference Lemmas 4, 5): T_stab and |C_out| beside their bounds",
+                     PropertyKind::custom,
+                     {},
+                     "",
+                     {},
+                     "",
+                     fixpoint_lemma([](const proofs::Family& f, const proofs::CheckOptions& o) {
+                       return proofs::check_lemma_6_6(f, o);
+                     })},
+                    {"lemma-6.7",
+                     "Lemma 6.7 (conference Lemma 6): proportionality at the fixed point",
+                     PropertyKind::custom,
+                     {},
+                     "",
+                     {},
+                     "",
+                     fixpoint_lemma([](const proofs::Family& f, const proofs::CheckOptions& o) {
+                       return proofs::check_lemma_6_7(f, o);
                      })}};
     return m;
   };
@@ -136,7 +189,10 @@ ModelDefinition mc_round_definition() {
              {{{"m", 2}, {"nbh", 4}}, "lemma-6.1", Verdict::holds},
              // A finding: conference Lemma 2(2) fails on a 2×2 grid with 5 robots (see
              // proofs/README.md); the journal's Lemma 6.4(2) holds there.
-             {{{"m", 2}, {"nbh", 4}}, "lemma-6.4", Verdict::violated}};
+             {{{"m", 2}, {"nbh", 4}}, "lemma-6.4", Verdict::violated},
+             {{{"m", 2}, {"nbh", 8}}, "lemma-6.5", Verdict::holds},
+             {{{"m", 2}, {"nbh", 8}}, "lemma-6.6", Verdict::holds},
+             {{{"m", 2}, {"nbh", 8}}, "lemma-6.7", Verdict::holds}};
   return d;
 }
 
