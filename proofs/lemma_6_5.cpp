@@ -217,13 +217,7 @@ FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& fa
       tallies.skipped = coverage.skipped;
     }
   };
-  const unsigned threads = std::max(1u, options.threads);
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back(work);
-  work();
-  for (auto& t : pool)
-    t.join();
+  run_on_threads(options.threads, work);
 
   Tallies all(lemma);
   for (Tallies& t : per_setting)
@@ -251,7 +245,7 @@ FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& fa
   r.edges = check.rounds;
   r.depth = 0;
   r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  r.threads = threads;
+  r.threads = std::max(1u, options.threads);
   r.time_unit = "rounds";
   const std::string scope = std::to_string(check.instances) +
                             " runs to the fixed point (default "

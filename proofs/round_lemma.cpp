@@ -348,13 +348,7 @@ LemmaCheck check_family(const RoundLemma& lemma, const Family& family,
       tallies.skipped = coverage.skipped;
     }
   };
-  const unsigned threads = std::max(1u, options.threads);
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back(work);
-  work();
-  for (auto& t : pool)
-    t.join();
+  run_on_threads(options.threads, work);
 
   Tallies all(lemma);
   std::uint64_t too_many = 0;
@@ -374,7 +368,7 @@ LemmaCheck check_family(const RoundLemma& lemma, const Family& family,
                               " instances checked, " + std::to_string(all.skipped) +
                               " symmetric duplicates skipped";
   LemmaCheck check = finish(lemma, std::move(all), covered, std::move(figures), false,
-                            seconds_since(start), threads);
+                            seconds_since(start), std::max(1u, options.threads));
   if (too_many > 0) {
     check.result.figures.emplace_back("instances not checked (too many outcomes)",
                                       std::to_string(too_many));

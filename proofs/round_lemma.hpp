@@ -18,11 +18,13 @@
 // decide the verdict, and steps of the paper's proof, reported beside them so that a
 // failing statement shows which step breaks (they do not decide the verdict).
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include "checker/result.hpp"
@@ -113,6 +115,17 @@ struct LemmaCheck {
   // Throws std::out_of_range for an unknown id.
   const ClaimTally& claim(std::string_view id) const;
 };
+
+// Runs `work` on `threads` threads (this one included) and waits for all of them; the
+// checks split their settings between threads through a shared counter inside `work`.
+template <class Work> void run_on_threads(unsigned threads, Work& work) {
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < std::max(1u, threads); ++t)
+    pool.emplace_back([&work] { work(); });
+  work();
+  for (auto& t : pool)
+    t.join();
+}
 
 struct CheckOptions {
   unsigned threads = 1;                // settings are split between threads; same results
