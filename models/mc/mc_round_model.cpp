@@ -104,24 +104,22 @@ ModelDefinition mc_round_definition() {
     // automaton above; the family covers several of each (its report says which).
     proofs::Family family = proofs::Family::standard(grid.neighbourhood());
     std::erase_if(family.sides, [&](const proofs::Side& side) { return side.m > grid.m(); });
-    auto lemma = [family](auto check) {
-      return [family, check](const checker::ExploreOptions& options) {
-        proofs::CheckOptions check_options;
-        check_options.threads = options.threads;
-        return check(family, check_options).result;
-      };
-    };
     // The lemmas about runs to the fixed point use the smaller fixed-point family.
     proofs::Family fixpoint_family = proofs::fixpoint_family(grid.neighbourhood());
     std::erase_if(fixpoint_family.sides,
                   [&](const proofs::Side& side) { return side.m > grid.m(); });
-    auto fixpoint_lemma = [fixpoint_family](auto check) {
-      return [fixpoint_family, check](const checker::ExploreOptions& options) {
-        proofs::CheckOptions check_options;
-        check_options.threads = options.threads;
-        return check(fixpoint_family, check_options).result;
+    // A property that runs `check` over `f`, with the command line's thread count.
+    auto over = [](const proofs::Family& f) {
+      return [f](auto check) {
+        return [f, check](const checker::ExploreOptions& options) {
+          proofs::CheckOptions check_options;
+          check_options.threads = options.threads;
+          return check(f, check_options).result;
+        };
       };
     };
+    const auto lemma = over(family);
+    const auto fixpoint_lemma = over(fixpoint_family);
     using checker::PropertyKind;
     ModelInstance m{round.automaton, {}, ""};
     m.properties = {{"fixpoint",
