@@ -8,14 +8,7 @@ namespace checker {
 PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& options) {
   const tioa::SuccessorGenerator generator(system);
   const Exploration ex = explore(generator, system.start(), options);
-  PropertyResult r;
-  r.kind = "deadlock";
-  r.states = ex.store.size();
-  r.edges = ex.edges;
-  r.depth = ex.depth;
-  r.seconds = ex.seconds;
-  r.threads = ex.threads;
-  r.time_unit = generator.timed() ? "quanta" : "steps";
+  PropertyResult r = result_of("deadlock", ex, generator);
   const char* what = generator.timed() ? "time-lock" : "deadlock";
   if (!ex.stuck.empty()) {
     r.verdict = Verdict::violated;

@@ -9,14 +9,7 @@ PropertyResult check_invariant(const Automaton& system, const StatePredicate& in
   hooks.target = [&](const Word* s) { return !invariant(tioa::State(s, 0)); };
   const Exploration ex = explore(generator, system.start(), options, hooks);
 
-  PropertyResult r;
-  r.kind = "invariant";
-  r.states = ex.store.size();
-  r.edges = ex.edges;
-  r.depth = ex.depth;
-  r.seconds = ex.seconds;
-  r.threads = ex.threads;
-  r.time_unit = generator.timed() ? "quanta" : "steps";
+  PropertyResult r = result_of("invariant", ex, generator);
   if (ex.found) {
     r.verdict = Verdict::violated;
     r.trace = trace_to(generator, ex, *ex.found);

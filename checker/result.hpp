@@ -39,6 +39,11 @@ struct PropertyResult {
   std::vector<std::pair<std::string, std::string>> figures; // further named numbers
 };
 
+// A result of `kind` with the figures of an exploration: states, edges, depth, seconds,
+// threads, and the unit of time of the generator ("quanta" timed, "steps" untimed).
+PropertyResult result_of(const std::string& kind, const Exploration& ex,
+                         const tioa::SuccessorGenerator& generator);
+
 // Sets verdict and message for a run that stopped on a limit.
 void mark_incomplete(PropertyResult& result, const Exploration& ex, const std::string& covered);
 

@@ -287,14 +287,7 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
   hooks.record_edges = true;
   const Exploration ex = explore(gen, system.start(), options, hooks);
 
-  PropertyResult r;
-  r.kind = "stabilisation";
-  r.states = ex.store.size();
-  r.edges = ex.edges;
-  r.depth = ex.depth;
-  r.seconds = ex.seconds;
-  r.threads = ex.threads;
-  r.time_unit = gen.timed() ? "quanta" : "steps";
+  PropertyResult r = result_of("stabilisation", ex, gen);
   if (!ex.complete()) {
     mark_incomplete(r, ex, "no execution found to stay outside L so far");
     return r;

@@ -4,22 +4,11 @@
 #include <catch2/catch.hpp>
 
 #include "proofs/lemma_6_5.hpp"
+#include "tests/proofs/small_family.hpp"
 
 using namespace proofs;
+using proofs::testing::small_family;
 
-namespace {
-
-// 2×2 with counts 0..4 and 3×3 with counts 0..1, every curve, k ∈ {1, 2}, ρ2 ∈ {1/2, 9/10}.
-Family small_family(mc::Neighbourhood nbh) {
-  Family f;
-  f.sides = {{2, 4}, {3, 1}};
-  f.neighbourhoods = {nbh};
-  f.ks = {1, 2};
-  f.rho2s = {{1, 2}, {9, 10}};
-  return f;
-}
-
-} // namespace
 
 TEST_CASE("lemma 6.5: T_out beside the journal's bound on a small family, both neighbourhoods",
           "[proofs][lemma-6.5]") {

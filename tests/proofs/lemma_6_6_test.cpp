@@ -3,21 +3,11 @@
 #include <catch2/catch.hpp>
 
 #include "proofs/lemma_6_6.hpp"
+#include "tests/proofs/small_family.hpp"
 
 using namespace proofs;
+using proofs::testing::small_family;
 
-namespace {
-
-Family small_family(mc::Neighbourhood nbh) {
-  Family f;
-  f.sides = {{2, 4}, {3, 1}};
-  f.neighbourhoods = {nbh};
-  f.ks = {1, 2};
-  f.rho2s = {{1, 2}, {9, 10}};
-  return f;
-}
-
-} // namespace
 
 TEST_CASE("lemma 6.6: T_stab and |C_out| beside their bounds on a small family",
           "[proofs][lemma-6.6]") {

@@ -3,21 +3,11 @@
 #include <catch2/catch.hpp>
 
 #include "proofs/lemma_6_7.hpp"
+#include "tests/proofs/small_family.hpp"
 
 using namespace proofs;
+using proofs::testing::small_family;
 
-namespace {
-
-Family small_family(mc::Neighbourhood nbh) {
-  Family f;
-  f.sides = {{2, 4}, {3, 1}};
-  f.neighbourhoods = {nbh};
-  f.ks = {1, 2};
-  f.rho2s = {{1, 2}, {9, 10}};
-  return f;
-}
-
-} // namespace
 
 TEST_CASE("lemma 6.7: the worst |y_u/q_u - y_v/q_v| at the fixed point beside its bound",
           "[proofs][lemma-6.7]") {
