@@ -1,0 +1,387 @@
+#include "proofs/fixpoint_search.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+
+namespace proofs {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string join(const std::vector<std::string>& parts, const std::string& separator = ", ") {
+  std::string out;
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    out += (i ? separator : "") + parts[i];
+  return out;
+}
+
+// M_0 of one sample: a third of the samples each uniform, piles, or a plateau with dips.
+Counts population(SplitMix64& random, std::size_t regions, RobotCount max_count) {
+  const auto bound = static_cast<std::uint64_t>(max_count);
+  Counts counts(regions, 0);
+  switch (random.below(3)) {
+  case 0: // every region uniform in 0..max_count
+    for (RobotCount& c : counts)
+      c = static_cast<RobotCount>(random.below(bound + 1));
+    break;
+  case 1: // 1 to 3 piles, the rest empty: the long runs of a crowd spreading out
+    for (std::uint64_t pile = 0, piles = 1 + random.below(3); pile < piles; ++pile)
+      counts[random.below(regions)] = static_cast<RobotCount>(random.below(bound + 1));
+    break;
+  default: { // a plateau B ± B/4, an eighth of the regions a dip to 0..B/2
+    const std::uint64_t level = random.below(bound + 1), amplitude = level / 4;
+    for (RobotCount& c : counts) {
+      if (random.below(8) == 0) {
+        c = static_cast<RobotCount>(random.below(level / 2 + 1));
+        continue;
+      }
+      const auto noise = static_cast<std::int64_t>(random.below(2 * amplitude + 1)) -
+                         static_cast<std::int64_t>(amplitude);
+      c = std::clamp<RobotCount>(static_cast<RobotCount>(level) + noise, 0, max_count);
+    }
+  }
+  }
+  return counts;
+}
+
+// Fewer robots, then the smaller grid; ties keep the first sample.
+bool smaller(const BoundWitness& a, const BoundWitness& b) {
+  if (a.robots() != b.robots())
+    return a.robots() < b.robots();
+  return a.setting.m < b.setting.m;
+}
+
+// Is a closer to its bound than b (a larger value/bound, exactly)? A violation is closest;
+// between two violations the first stays. Measurements with a bound <= 0 that hold are
+// not compared (never recorded as the closest).
+bool closer(const Measurement& a, const Measurement& b) {
+  const bool a_over = a.value > a.bound, b_over = b.value > b.bound;
+  if (a_over || b_over)
+    return a_over && !b_over;
+  return a.value * b.bound > b.value * a.bound;
+}
+
+void record(BoundTally& tally, BoundWitness&& witness) {
+  ++tally.premise;
+  const Measurement& m = witness.measurement;
+  const bool violated = witness.violated();
+  if (!tally.largest || m.value > tally.largest->measurement.value)
+    tally.largest = witness;
+  if ((m.bound > 0 || violated) && (!tally.tightest || closer(m, tally.tightest->measurement)))
+    tally.tightest = witness;
+  if (violated) {
+    ++tally.violations;
+    if (!tally.smallest || smaller(witness, *tally.smallest))
+      tally.smallest = std::move(witness);
+  }
+}
+
+// One sample run to its fixed point: every claim's measurement as a witness (nullopt: the
+// premise is not met), or no fixed point within max_rounds.
+struct SampleRun {
+  std::vector<std::optional<BoundWitness>> witnesses;
+  std::size_t rounds = 0;
+  bool no_fixpoint = false;
+};
+
+SampleRun run_sample(const FixpointLemma& lemma, const FixpointSample& sample,
+                     std::size_t max_rounds) {
+  SampleRun out;
+  const mc::RoundSystem system = sample.setting.system();
+  mc::FixpointRun run;
+  try {
+    run = system.run_to_fixpoint(sample.start, {.max_rounds = max_rounds, .keep_history = true});
+  } catch (const mc::RoundLimitReached& e) {
+    out.no_fixpoint = true;
+    out.rounds = e.rounds;
+    out.witnesses.resize(lemma.claims.size());
+    return out;
+  }
+  out.rounds = run.fixpoint_round;
+  const FixpointInstance instance{sample.setting, system, sample.start, run, rho3(system)};
+  std::vector<std::optional<Measurement>> measured(lemma.claims.size());
+  lemma.evaluate(instance, measured);
+  for (std::size_t c = 0; c < measured.size(); ++c) {
+    if (!measured[c]) {
+      out.witnesses.emplace_back();
+      continue;
+    }
+    out.witnesses.push_back(BoundWitness{lemma.claims[c].id, sample.setting, sample.start,
+                                         std::move(*measured[c]), run.t_out, run.t_stab,
+                                         run.fixpoint_round});
+  }
+  return out;
+}
+
+// The sample without row `row` and column `col`.
+FixpointSample without(const FixpointSample& sample, int row, int col) {
+  const int m = sample.setting.m;
+  FixpointSample out = sample;
+  out.setting.m = m - 1;
+  out.setting.q.clear();
+  out.start.clear();
+  for (int r = 0; r < m; ++r)
+    for (int c = 0; c < m; ++c)
+      if (r != row && c != col) {
+        out.setting.q.push_back(sample.setting.q[static_cast<std::size_t>(r * m + c)]);
+        out.start.push_back(sample.start[static_cast<std::size_t>(r * m + c)]);
+      }
+  return out;
+}
+
+std::string describe_search(const FixpointSearchOptions& o) {
+  std::vector<std::string> ks, rho2s;
+  for (RobotCount k : o.ks)
+    ks.push_back(std::to_string(k));
+  for (const mc::Rational& r : o.rho2s)
+    rho2s.push_back(mc::to_string(r));
+  return "random search, seed " + std::to_string(o.seed) + ", " + std::to_string(o.samples) +
+         " samples: m in " + std::to_string(o.min_side) + ".." + std::to_string(o.max_side) +
+         ", neighbourhood " + to_string(o.neighbourhood) + ", curves {" + join(o.curves) +
+         "}, k in {" + join(ks) + "}, rho2 in {" + join(rho2s) + "}, counts 0.." +
+         std::to_string(o.max_count) +
+         " per region (a third uniform, a third 1 to 3 piles, a third a plateau with dips); "
+         "each run to its fixed point in the default order; counterexamples " +
+         (o.shrink ? "shrunk" : "not shrunk");
+}
+
+} // namespace
+
+std::vector<FixpointSample> fixpoint_samples(const FixpointSearchOptions& options) {
+  if (options.min_side < 1 || options.max_side < options.min_side || options.max_count < 0 ||
+      options.curves.empty() || options.ks.empty() || options.rho2s.empty() || options.samples == 0)
+    throw std::invalid_argument("fixed-point search: need 1 <= min_side <= max_side, "
+                                "max_count >= 0, some curves, k and rho2, and a sample");
+  SplitMix64 random(options.seed);
+  std::vector<FixpointSample> samples;
+  samples.reserve(options.samples);
+  for (std::uint64_t s = 0; s < options.samples; ++s) {
+    FixpointSample sample;
+    Setting& setting = sample.setting;
+    setting.m = options.min_side + static_cast<int>(random.below(static_cast<std::uint64_t>(
+                                       options.max_side - options.min_side + 1)));
+    setting.neighbourhood = options.neighbourhood;
+    setting.curve = options.curves[random.below(options.curves.size())];
+    setting.q = curve_q(setting.curve, setting.m);
+    setting.k = options.ks[random.below(options.ks.size())];
+    setting.rho2 = options.rho2s[random.below(options.rho2s.size())];
+    setting.rho1 = options.rho1;
+    setting.max_count = options.max_count;
+    sample.start = population(random, setting.q.size(), options.max_count);
+    samples.push_back(std::move(sample));
+  }
+  return samples;
+}
+
+std::optional<BoundWitness> fixpoint_violation(const FixpointLemma& lemma, std::size_t claim,
+                                               const FixpointSample& sample,
+                                               std::size_t max_rounds) {
+  SampleRun run = run_sample(lemma, sample, max_rounds);
+  auto& witness = run.witnesses.at(claim);
+  if (witness && witness->violated())
+    return std::move(witness);
+  return std::nullopt;
+}
+
+BoundWitness shrink_fixpoint(const FixpointLemma& lemma, std::size_t claim,
+                             const BoundWitness& start, std::size_t max_rounds) {
+  BoundWitness best = start;
+  FixpointSample current{start.setting, start.start};
+  auto attempt = [&](const FixpointSample& candidate) {
+    if (auto found = fixpoint_violation(lemma, claim, candidate, max_rounds)) {
+      best = std::move(*found);
+      current = candidate;
+      return true;
+    }
+    return false;
+  };
+  for (bool changed = true; changed;) {
+    changed = false;
+    // A smaller grid.
+    for (bool smaller_grid = true; smaller_grid && current.setting.m > 1;) {
+      smaller_grid = false;
+      for (int row = 0; row < current.setting.m && !smaller_grid; ++row)
+        for (int col = 0; col < current.setting.m && !smaller_grid; ++col)
+          smaller_grid = attempt(without(current, row, col));
+      changed |= smaller_grid;
+    }
+    // Fewer robots, all together.
+    for (auto [num, den] :
+         std::vector<std::pair<RobotCount, RobotCount>>{{1, 2}, {2, 3}, {3, 4}, {7, 8}, {15, 16}})
+      for (bool scaled = true; scaled;) {
+        FixpointSample candidate = current;
+        for (RobotCount& c : candidate.start)
+          c = c == 0 ? 0 : std::max<RobotCount>(1, c * num / den);
+        scaled = candidate.start != current.start && attempt(candidate);
+        changed |= scaled;
+      }
+    // Smaller counts, one region at a time: to 0, then by halves, then by 1.
+    for (std::size_t u = 0; u < current.start.size(); ++u)
+      for (bool lowered = true; lowered && current.start[u] > 0;) {
+        lowered = false;
+        const RobotCount value = current.start[u];
+        std::vector<RobotCount> tries{0};
+        for (RobotCount step = value / 2; step >= 1; step /= 2)
+          tries.push_back(value - step);
+        for (RobotCount to : tries) {
+          FixpointSample candidate = current;
+          candidate.start[u] = to;
+          if (to < value && attempt(candidate)) {
+            lowered = changed = true;
+            break;
+          }
+        }
+      }
+    // A smaller k.
+    for (RobotCount k = 1; k < current.setting.k; ++k) {
+      FixpointSample candidate = current;
+      candidate.setting.k = k;
+      if (attempt(candidate)) {
+        changed = true;
+        break;
+      }
+    }
+    // Smaller q: to 0, else one less.
+    for (std::size_t u = 0; u < current.setting.q.size(); ++u)
+      for (QuantisedLength to : {QuantisedLength{0}, current.setting.q[u] - 1}) {
+        if (to < 0 || to >= current.setting.q[u])
+          continue;
+        FixpointSample candidate = current;
+        candidate.setting.q[u] = to;
+        if (attempt(candidate)) {
+          changed = true;
+          break;
+        }
+      }
+  }
+  if (best.setting.q != start.setting.q || best.setting.m != start.setting.m)
+    best.setting.curve = start.setting.curve.rfind("shrunk", 0) == 0
+                             ? start.setting.curve
+                             : "shrunk from " + start.setting.curve;
+  return best;
+}
+
+FixpointCheck search_fixpoint(const FixpointLemma& lemma, const FixpointSearchOptions& options) {
+  const auto began = Clock::now();
+  const std::vector<FixpointSample> samples = fixpoint_samples(options);
+
+  std::vector<BoundTally> tallies;
+  for (const BoundClaim& c : lemma.claims) {
+    BoundTally tally;
+    tally.claim = c;
+    tallies.push_back(std::move(tally));
+  }
+  std::uint64_t rounds = 0, no_fixpoint = 0;
+  // In blocks, so that the runs kept for merging stay few: each block's samples are split
+  // between threads, then merged in sample order.
+  constexpr std::size_t block = 256;
+  std::vector<SampleRun> runs;
+  for (std::size_t first = 0; first < samples.size(); first += block) {
+    const std::size_t last = std::min(samples.size(), first + block);
+    runs.assign(last - first, SampleRun{});
+    std::atomic<std::size_t> next{first};
+    auto work = [&] {
+      for (std::size_t i; (i = next.fetch_add(1)) < last;)
+        runs[i - first] = run_sample(lemma, samples[i], options.max_rounds);
+    };
+    run_on_threads(options.threads, work);
+    for (SampleRun& run : runs) {
+      rounds += run.rounds;
+      no_fixpoint += run.no_fixpoint ? 1 : 0;
+      for (std::size_t c = 0; c < tallies.size(); ++c)
+        if (run.witnesses[c])
+          record(tallies[c], std::move(*run.witnesses[c]));
+    }
+  }
+  std::vector<std::string> found;
+  for (std::size_t c = 0; c < tallies.size(); ++c)
+    if (tallies[c].smallest) {
+      found.push_back(tallies[c].claim.id + ": " + std::to_string(tallies[c].smallest->robots()) +
+                      " robots, m = " + std::to_string(tallies[c].smallest->setting.m));
+      if (options.shrink)
+        tallies[c].smallest = shrink_fixpoint(lemma, c, *tallies[c].smallest, options.max_rounds);
+    }
+
+  FixpointCheck check;
+  check.claims = std::move(tallies);
+  check.instances = samples.size();
+  check.rounds = rounds;
+  std::vector<std::string> violated, steps;
+  for (const BoundTally& c : check.claims) {
+    if (!c.smallest)
+      continue;
+    if (!c.claim.decides_verdict) {
+      steps.push_back(c.claim.id);
+      continue;
+    }
+    violated.push_back(c.claim.id);
+    if (!check.counterexample || smaller(*c.smallest, *check.counterexample))
+      check.counterexample = c.smallest;
+  }
+
+  checker::PropertyResult& r = check.result;
+  r.name = lemma.name;
+  r.kind = "round-lemma";
+  r.description = lemma.description;
+  r.states = check.instances;
+  r.edges = check.rounds;
+  r.depth = 0;
+  r.seconds = std::chrono::duration<double>(Clock::now() - began).count();
+  r.threads = std::max(1u, options.threads);
+  r.time_unit = "rounds";
+  const std::string scope = std::to_string(check.rounds) + " rounds to the fixed point";
+  if (!violated.empty()) {
+    r.verdict = checker::Verdict::violated;
+    r.message = "violated: " + join(violated) +
+                " (smallest counterexample: " + std::to_string(check.counterexample->robots()) +
+                " robots, m = " + std::to_string(check.counterexample->setting.m) + ", claim " +
+                check.counterexample->claim + "); " + std::to_string(check.instances) +
+                " samples, " + scope;
+  } else if (no_fixpoint > 0) {
+    r.verdict = checker::Verdict::incomplete;
+    r.message = std::to_string(no_fixpoint) + " of " + std::to_string(check.instances) +
+                " samples reach no fixed point within " + std::to_string(options.max_rounds) +
+                " rounds; the others hold; " + scope;
+  } else {
+    // A sample is not a proof: never a plain "holds".
+    r.verdict = checker::Verdict::incomplete;
+    r.message = "holds on " + std::to_string(check.instances) +
+                " samples (a random search, not a proof); " + scope;
+  }
+  if (!steps.empty())
+    r.message += "; reported beside them, not deciding: " + join(steps) + " fails";
+
+  r.figures.emplace_back("covered", describe_search(options));
+  r.figures.emplace_back("seed", std::to_string(options.seed));
+  r.figures.emplace_back("samples", std::to_string(options.samples));
+  r.figures.emplace_back("instances checked", std::to_string(check.instances));
+  r.figures.emplace_back("rounds run", std::to_string(check.rounds));
+  if (no_fixpoint > 0)
+    r.figures.emplace_back("samples without a fixed point within " +
+                               std::to_string(options.max_rounds) + " rounds",
+                           std::to_string(no_fixpoint));
+  if (!found.empty())
+    r.figures.emplace_back("smallest counterexamples before shrinking", join(found, "; "));
+  for (const BoundTally& c : check.claims)
+    r.figures.emplace_back((c.claim.decides_verdict ? "claim " : "proof step ") + c.claim.id,
+                           c.summary());
+  for (const BoundTally& c : check.claims)
+    r.notes.push_back((c.claim.decides_verdict ? "claim " : "proof step ") + c.claim.id + ": " +
+                      c.claim.statement + " [" + c.claim.source + "]");
+  for (const BoundTally& c : check.claims) {
+    const std::optional<BoundWitness>& shown = c.smallest ? c.smallest : c.largest;
+    if (shown)
+      for (std::string& line : shown->lines())
+        r.notes.push_back(std::move(line));
+  }
+  if (check.counterexample) {
+    r.trace_role = "counterexample";
+    r.trace_kind = "round";
+  }
+  return check;
+}
+
+} // namespace proofs
