@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "cli/commands.hpp"
 #include "cli/exit_status.hpp"
@@ -15,14 +16,19 @@ Json list_json() {
   Json models = Json::array();
   for (const auto& def : models::all_models()) {
     Json params = Json::array();
-    for (const auto& p : def.params)
-      params.push_back(Json{{"name", p.name},
-                            {"kind", p.kind == models::ParamKind::integer ? "integer" : "rational"},
-                            {"default", param_json(p.default_value)},
-                            {"lo", param_json(p.lo)},
-                            {"hi", param_json(p.hi)},
-                            {"range", p.range()},
-                            {"description", p.description}});
+    for (const auto& p : def.params) {
+      const bool choice = p.kind == models::ParamKind::choice;
+      Json param{{"name", p.name},
+                 {"kind", models::to_string(p.kind)},
+                 {"default", param_json(p.default_value)},
+                 {"lo", choice ? Json() : param_json(p.lo)}, // null: a choice has no bounds
+                 {"hi", choice ? Json() : param_json(p.hi)},
+                 {"range", p.range()},
+                 {"description", p.description}};
+      if (choice)
+        param["choices"] = p.choices;
+      params.push_back(std::move(param));
+    }
     Json properties = Json::array();
     for (const auto& [name, description] : def.properties)
       properties.push_back(Json{{"name", name}, {"description", description}});
@@ -41,17 +47,26 @@ void print_list_text() {
       std::cout << '\n';
     first = false;
     std::cout << def.name << ": " << def.description << '\n';
+    // A choice shows "choice" in the range column and its names on the next line, so that
+    // a long list does not widen the column.
+    auto range = [](const models::ParamSpec& p) {
+      return p.kind == models::ParamKind::choice ? std::string("choice") : p.range();
+    };
     std::size_t name_width = 0, default_width = 0, range_width = 0;
     for (const auto& p : def.params) {
       name_width = std::max(name_width, p.name.size());
       default_width = std::max(default_width, p.default_value.text().size());
-      range_width = std::max(range_width, p.range().size());
+      range_width = std::max(range_width, range(p).size());
     }
     std::cout << "  parameters:\n";
-    for (const auto& p : def.params)
+    for (const auto& p : def.params) {
       std::cout << fmt::format("    {:<{}}  default {:<{}}  range {:<{}}  {}\n", p.name, name_width,
-                               p.default_value.text(), default_width, p.range(), range_width,
+                               p.default_value.text(), default_width, range(p), range_width,
                                p.description);
+      if (p.kind == models::ParamKind::choice)
+        std::cout << fmt::format("    {:<{}}  one of: {}\n", "", name_width,
+                                 fmt::join(p.choices, ", "));
+    }
     std::size_t property_width = 0;
     for (const auto& property : def.properties)
       property_width = std::max(property_width, property.first.size());

@@ -88,6 +88,8 @@ Json property_json(const ModelRun& run, const checker::PropertyResult& r, bool w
 }
 
 Json param_json(const models::ParamValue& value) {
+  if (value.is_choice())
+    return value.text();
   if (value.whole())
     return value.integer();
   return value.text();

@@ -1,6 +1,7 @@
 #pragma once
-// The value of a model parameter: a whole number (N = 5) or an exact rational
-// (rho2 = 9/10), kept exact so that models can take floors of real-valued expressions.
+// The value of a model parameter: a whole number (N = 5), an exact rational (rho2 = 9/10),
+// kept exact so that models can take floors of real-valued expressions, or one name from a
+// list of choices (curve = line).
 
 #include <cstdint>
 #include <string>
@@ -17,15 +18,25 @@ public:
   ParamValue(std::int64_t whole) : value_(whole) {} // NOLINT: whole numbers convert
   ParamValue(int whole) : value_(whole) {}          // NOLINT
   explicit ParamValue(Rational value) : value_(std::move(value)) {}
+  // A choice: one name of a list (the list is the ParamSpec's).
+  static ParamValue choice(std::string name);
 
-  bool whole() const { return boost::multiprecision::denominator(value_) == 1; }
-  // The whole number; a std::logic_error for a fraction (the model asked the wrong kind).
+  bool is_choice() const { return is_choice_; }
+  // A whole number (never a choice).
+  bool whole() const { return !is_choice_ && boost::multiprecision::denominator(value_) == 1; }
+  // The whole number; a std::logic_error for a fraction or a choice (the model asked the
+  // wrong kind).
   std::int64_t integer() const;
-  const Rational& rational() const { return value_; }
-  std::string text() const; // "5", "9/10"
+  // The number; a std::logic_error for a choice.
+  const Rational& rational() const;
+  std::string text() const; // "5", "9/10", "line"
 
-  friend bool operator==(const ParamValue& a, const ParamValue& b) { return a.value_ == b.value_; }
-  friend bool operator!=(const ParamValue& a, const ParamValue& b) { return a.value_ != b.value_; }
+  // Equal: the same number, or the same choice. The order is that of the numbers (choices
+  // are not ordered; a choice compares as 0).
+  friend bool operator==(const ParamValue& a, const ParamValue& b) {
+    return a.is_choice_ == b.is_choice_ && a.value_ == b.value_ && a.name_ == b.name_;
+  }
+  friend bool operator!=(const ParamValue& a, const ParamValue& b) { return !(a == b); }
   friend bool operator<(const ParamValue& a, const ParamValue& b) { return a.value_ < b.value_; }
   friend bool operator<=(const ParamValue& a, const ParamValue& b) { return a.value_ <= b.value_; }
   friend bool operator>(const ParamValue& a, const ParamValue& b) { return a.value_ > b.value_; }
@@ -33,6 +44,8 @@ public:
 
 private:
   Rational value_;
+  bool is_choice_ = false;
+  std::string name_; // the choice
 };
 
 } // namespace models

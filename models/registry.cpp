@@ -1,5 +1,6 @@
 #include "models/registry.hpp"
 
+#include <algorithm>
 #include <charconv>
 
 #include "models/fischer/fischer.hpp"
@@ -9,7 +10,43 @@
 
 namespace models {
 
+namespace {
+
+std::string join(const std::vector<std::string>& parts) {
+  std::string out;
+  for (const auto& part : parts)
+    out += (out.empty() ? "" : ", ") + part;
+  return out;
+}
+
+} // namespace
+
+const char* to_string(ParamKind kind) {
+  switch (kind) {
+  case ParamKind::integer:
+    return "integer";
+  case ParamKind::rational:
+    return "rational";
+  case ParamKind::choice:
+    return "choice";
+  }
+  return "?";
+}
+
+ParamSpec ParamSpec::choice(std::string name, std::string default_choice,
+                            std::vector<std::string> choices, std::string description) {
+  ParamSpec spec;
+  spec.name = std::move(name);
+  spec.default_value = ParamValue::choice(std::move(default_choice));
+  spec.description = std::move(description);
+  spec.kind = ParamKind::choice;
+  spec.choices = std::move(choices);
+  return spec;
+}
+
 std::string ParamSpec::range() const {
+  if (kind == ParamKind::choice)
+    return "{" + join(choices) + "}";
   if (kind == ParamKind::integer)
     return lo.text() + ".." + hi.text();
   return std::string(lo_open ? "(" : "[") + lo.text() + ", " + hi.text() + (hi_open ? ")" : "]");
@@ -50,6 +87,13 @@ ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::
         known += (known.empty() ? "" : ", ") + p.name;
       throw UsageError("model '" + model.name + "' has no parameter '" + name +
                        "' (it has: " + known + ")");
+    }
+    if (spec->kind == ParamKind::choice) {
+      if (std::find(spec->choices.begin(), spec->choices.end(), text) == spec->choices.end())
+        throw UsageError("parameter " + name + ": '" + text + "' is not one of " +
+                         join(spec->choices));
+      values[name] = ParamValue::choice(text);
+      continue;
     }
     ParamValue value;
     if (spec->kind == ParamKind::integer) {

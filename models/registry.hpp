@@ -15,10 +15,13 @@
 
 namespace models {
 
-enum class ParamKind { integer, rational };
+enum class ParamKind { integer, rational, choice };
 
-// A parameter: a whole number in lo..hi, or a rational ("9/10", "0.9", "2") in the
-// interval from lo to hi, each end closed or open (rho in (0, 1)).
+const char* to_string(ParamKind kind); // "integer", "rational", "choice"
+
+// A parameter: a whole number in lo..hi, a rational ("9/10", "0.9", "2") in the interval
+// from lo to hi, each end closed or open (rho in (0, 1)), or one name of a list of
+// choices (lo and hi unused).
 struct ParamSpec {
   std::string name;
   ParamValue default_value = 0;
@@ -28,8 +31,13 @@ struct ParamSpec {
   ParamKind kind = ParamKind::integer;
   bool lo_open = false;
   bool hi_open = false;
+  std::vector<std::string> choices = {}; // ParamKind::choice: the names, in the order listed
 
-  std::string range() const; // "2..20", "(0, 1)"
+  // A choice parameter; default_choice must be one of the choices.
+  static ParamSpec choice(std::string name, std::string default_choice,
+                          std::vector<std::string> choices, std::string description);
+
+  std::string range() const; // "2..20", "(0, 1)", "{standard, given}"
 };
 
 using ParamValues = std::map<std::string, ParamValue>;
