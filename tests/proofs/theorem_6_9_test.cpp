@@ -1,0 +1,83 @@
+// Theorem 6.9 / conference Theorem 1 (proofs/theorem_6_9.hpp): part (1) at count level, and
+// both parts with positions under the two membership readings, on a small family; the
+// finding under the faithful reading pinned with its smallest counterexample.
+#include <catch2/catch.hpp>
+
+#include "proofs/theorem_6_9.hpp"
+
+using namespace proofs;
+
+namespace {
+
+Family tiny_counts() {
+  Family f;
+  f.sides = {{2, 2}};
+  f.ks = {1};
+  f.rho2s = {{1, 2}};
+  return f;
+}
+
+PositionalFamily tiny_positions() {
+  PositionalFamily f;
+  f.sides = {2};
+  f.neighbourhoods = {mc::Neighbourhood::four};
+  f.max_count = 2;
+  f.ks = {1};
+  f.rho1s = {{1, 2}};
+  f.rho2s = {{1, 2}};
+  return f;
+}
+
+} // namespace
+
+TEST_CASE("theorem 6.9: the curves of the positional family are exact", "[proofs][theorem-6.9]") {
+  for (int m = 1; m <= 3; ++m)
+    for (const NamedCurve& curve : positional_curves(m)) {
+      INFO("m = " << m << ", curve " << curve.name);
+      CHECK_NOTHROW(mc::ExactCurve(curve.curve, mc::GridTiling(m, mc::Neighbourhood::four),
+                                   mc::Rational(1, 4)));
+    }
+  CHECK_THROWS_AS(positional_curves(4), std::invalid_argument);
+}
+
+TEST_CASE("theorem 6.9: holds with membership by assignment, fails with membership by position",
+          "[proofs][theorem-6.9]") {
+  const TheoremCheck check = check_theorem_6_9(tiny_counts(), tiny_positions());
+  CHECK(check.result.name == "theorem-6.9");
+  CHECK(check.counts.result.verdict == checker::Verdict::holds);
+  // 6 curves × 2 readings × 3^4 configurations.
+  CHECK(check.runs == 6 * 2 * 81);
+  for (const char* id : {"6.9(1) fixed [assigned]", "6.9(1) proportional [assigned]",
+                         "6.9(2) on curve [assigned]", "6.9(2) spacing [assigned]"}) {
+    INFO(id);
+    CHECK(check.claim(id).violations == 0);
+    CHECK(check.claim(id).undecided == 0);
+    CHECK(check.claim(id).premise > 0);
+  }
+  CHECK(check.claim("6.9(1) fixed [assigned]").premise == 6 * 81);
+
+  // The finding (models/mc/README.md, "Positions and calctarget"): calctarget sends a robot
+  // to an end of Γ_h owned by the next region, and assign sends it back, for ever.
+  const PositionalTally& fixed = check.claim("6.9(1) fixed [position]");
+  CHECK(fixed.violations > 0);
+  REQUIRE(fixed.smallest);
+  CHECK(fixed.smallest->robots == 2);
+  CHECK(fixed.smallest->setting.find("curve stub") != std::string::npos);
+  CHECK(fixed.smallest->why.find("never fixed") != std::string::npos);
+  CHECK(check.result.verdict == checker::Verdict::violated);
+  CHECK(check.result.message.find("6.9(1) fixed [position]") != std::string::npos);
+  // Where the faithful reading does become fixed, the rest of the theorem holds.
+  CHECK(check.claim("6.9(2) spacing [position]").violations == 0);
+  CHECK(check.claim("6.9(2) on curve [position]").violations == 0);
+}
+
+TEST_CASE("theorem 6.9: the counterexample is printed round by round", "[proofs][theorem-6.9]") {
+  PositionalFamily only_stub = tiny_positions();
+  only_stub.memberships = {mc::Membership::position};
+  const TheoremCheck check = check_theorem_6_9(tiny_counts(), only_stub);
+  bool printed = false;
+  for (const std::string& note : check.result.notes)
+    printed = printed || note.find("migrations #0 0->1") != std::string::npos;
+  CHECK(printed);
+  CHECK_THROWS_AS(check.claim("6.9(1) fixed [assigned]"), std::out_of_range);
+}
