@@ -58,7 +58,7 @@ struct Lemma68Family {
   // The dynamics: 1..max_robots robots (the ends included) on P_h = [0, L], L in lengths.
   std::size_t max_robots = 8;
   std::vector<mc::Rational> lengths{{1}, {7, 3}};
-  // Starts: every multiset of max_robots points of {0, L/grid_steps, …, L} ...
+  // Starts: for r robots, every multiset of r points of {0, L/grid_steps, …, L} ...
   std::size_t grid_steps = 4;
   // ... and, per (robots, L, ρ1), this many sorted random points p = L·a/b, b in
   // 1..random_denominator, a in 0..b (SplitMix64 from seed; the same on every platform).
@@ -105,9 +105,9 @@ struct SlowestRate {
   mc::Rational rho1;
   std::size_t n = 0;
   double spectral_radius = 0;
-  double margin = 0;     // 1 − ρ(T), from the closed form (2ρ1 sin²(π/2(n+1)))
-  double asymptotic = 0; // ρ1π²/(2(n+1)²)
-  std::uint64_t rounds_to_1e6 = 0;
+  double margin = 0;               // 1 − ρ(T), from the closed form (2ρ1 sin²(π/2(n+1)))
+  double asymptotic = 0;           // ρ1π²/(2(n+1)²)
+  std::uint64_t rounds_to_1e6 = 0; // 0: never (ρ(T) ≥ 1)
 };
 
 struct Lemma68Check {
