@@ -52,7 +52,7 @@ struct NamedCurve {
   mc::Curve curve;
 };
 
-// The curves of the positional family for side m (m = 1, 2, 3): a horizontal line through
+// The curves of the positional family for side m >= 1: a horizontal line through
 // the middle of row ⌊m/2⌋ drawn eastward and westward, an L, a closed square through region centres
 // (m >= 2), a 3-4-5 segment crossing three regions and a stub that ends on the line x = 1, so that
 // region 1 owns one point of Γ (both m = 2).
@@ -61,7 +61,7 @@ std::vector<NamedCurve> positional_curves(int m);
 struct PositionalFamily {
   std::vector<int> sides{1, 2};
   std::vector<mc::Neighbourhood> neighbourhoods{mc::Neighbourhood::four, mc::Neighbourhood::eight};
-  RobotCount max_count = 3; // robots per region: 0..c
+  RobotCount max_count = 2; // robots per region: 0..c
   std::vector<RobotCount> ks{1, 2};
   std::vector<mc::Rational> rho1s{{1, 2}, {9, 10}};
   std::vector<mc::Rational> rho2s{{1, 2}, {9, 10}};

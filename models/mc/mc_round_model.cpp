@@ -11,6 +11,8 @@
 #include "proofs/lemma_6_5.hpp"
 #include "proofs/lemma_6_6.hpp"
 #include "proofs/lemma_6_7.hpp"
+#include "proofs/lemma_6_8.hpp"
+#include "proofs/theorem_6_9.hpp"
 
 namespace models {
 
@@ -28,6 +30,8 @@ struct LemmaScope {
   std::uint64_t samples = 0;    // > 0: the seeded random searches instead
   proofs::SearchOptions search; // the one-step lemmas' search
   proofs::FixpointSearchOptions fixpoint_search; // the fixed-point lemmas' search
+  proofs::Lemma68Family spacing;                 // Lemma 6.8: the matrix T and the dynamics
+  proofs::PositionalFamily positions;            // Theorem 6.9 with robots' positions
 };
 
 LemmaScope lemma_scope(const ParamValues& p) {
@@ -71,6 +75,26 @@ LemmaScope lemma_scope(const ParamValues& p) {
     s.ks = fs.ks = {p.at("k").integer()};
     s.rho2s = fs.rho2s = {p.at("rho2").rational()};
     fs.curves = {p.at("curve").text()};
+  }
+  // Lemma 6.8 has no population: given narrows ρ1; samples > 0 sets its random starts.
+  // Theorem 6.9's positional family: grids up to min(m, 3) (given: m), this nbh; given: this
+  // k, ρ1, ρ2 and counts 0..n.
+  if (given)
+    scope.spacing.rho1s = {p.at("rho1").rational()};
+  if (scope.samples > 0) {
+    scope.spacing.random_starts = scope.samples;
+    scope.spacing.seed = seed;
+  }
+  proofs::PositionalFamily& pf = scope.positions;
+  pf.neighbourhoods = {nbh};
+  if (given) {
+    pf.sides = {m};
+    pf.max_count = p.at("n").integer();
+    pf.ks = {p.at("k").integer()};
+    pf.rho1s = {p.at("rho1").rational()};
+    pf.rho2s = {p.at("rho2").rational()};
+  } else {
+    std::erase_if(pf.sides, [&](int side) { return side > m; });
   }
   return scope;
 }
@@ -137,6 +161,23 @@ const std::vector<LemmaProperty>& lemma_properties() {
        "seed 000 Lemma 6.7 (conference Lemma 6): measured worst |y_u/q_u - y_v/q_v| at the "
        "fixed point beside 10(2m-1)/(q_min rho2)",
        to_fixpoint(proofs::lemma_6_7)},
+      {"lemma-6.8", "Lemma 6.8 (conference Lemma 7): even spacing in the limit",
+       "seed 000 Lemma 6.8 (conference Lemma 7): the proof's matrix T has spectral radius < 1 "
+       "(exact, Eigen, closed form) and calctarget's dynamics follow e(k+1) = T e(k) and "
+       "contract, in exact rationals; rho1 narrows with family=given, samples sets the random "
+       "starts",
+       [](const LemmaScope& scope, unsigned threads) {
+         return proofs::check_lemma_6_8(scope.spacing, {.threads = threads}).result;
+       }},
+      {"theorem-6.9", "Theorem 6.9 (conference Theorem 1)",
+       "seed 000 Theorem 6.9 (conference Theorem 1): part (1) at count level over the fixed-point "
+       "family, both parts with robots' positions (exact curves, grids up to min(m, 2); given: m) "
+       "under both "
+       "membership readings; samples is not used",
+       [](const LemmaScope& scope, unsigned threads) {
+         return proofs::check_theorem_6_9(scope.fixpoint, scope.positions, {.threads = threads})
+             .result;
+       }},
   };
   return all;
 }
@@ -237,6 +278,12 @@ ModelDefinition mc_round_definition() {
              {{{"m", 2}, {"nbh", 8}}, "lemma-6.5", Verdict::holds},
              {{{"m", 2}, {"nbh", 8}}, "lemma-6.6", Verdict::holds},
              {{{"m", 2}, {"nbh", 8}}, "lemma-6.7", Verdict::holds},
+             {{{"m", 2}, {"nbh", 4}}, "lemma-6.2", Verdict::holds},
+             {{{"m", 2}, {"nbh", 4}}, "lemma-6.3", Verdict::holds},
+             {{{"m", 2}, {"nbh", 4}}, "lemma-6.8", Verdict::holds},
+             // A finding: with membership by position (seed 002 line 111) the assignment need
+             // never become fixed (2 robots, curve stub; proofs/README.md).
+             {{{"m", 2}, {"nbh", 4}}, "theorem-6.9", Verdict::violated},
              // The random search finds the same among 20 samples of hundreds of robots.
              {{{"m", 2}, {"nbh", 4}, {"samples", 20}}, "lemma-6.4", Verdict::violated}};
   return d;

@@ -152,7 +152,8 @@ TEST_CASE("mc-round: samples > 0 runs the seeded random search on every lemma pr
           "[mc][round][search]") {
   const auto& def = models::find_model("mc-round");
   for (const auto& [name, description] : def.properties) {
-    if (name.rfind("lemma-", 0) != 0)
+    // Lemma 6.8 has no population to sample: samples sets its random starts (below).
+    if (name.rfind("lemma-", 0) != 0 || name == "lemma-6.8")
       continue;
     INFO("property " << name);
     const checker::PropertyResult r = run(name, {"m=2", "nbh=8", "samples=3", "seed=7"});
@@ -161,6 +162,27 @@ TEST_CASE("mc-round: samples > 0 runs the seeded random search on every lemma pr
     CHECK_THAT(figure(r, "covered"), Catch::StartsWith("random search, seed 7, 3 samples: m in "
                                                        "2..2, neighbourhood 8"));
   }
+}
+
+TEST_CASE("mc-round: lemma-6.8 takes rho1 from family=given and its random starts from samples",
+          "[mc][round][lemma-6.8]") {
+  const checker::PropertyResult r =
+      run("lemma-6.8", {"m=2", "family=given", "rho1=1/3", "samples=3", "seed=7"});
+  CHECK(r.verdict == Verdict::holds);
+  CHECK_THAT(figure(r, "covered"), Catch::Contains("rho1 in {1/3}"));
+  CHECK_THAT(figure(r, "covered"), Catch::Contains("3 seeded random starts"));
+  CHECK_THAT(figure(r, "covered"), Catch::Contains("seed 7"));
+}
+
+TEST_CASE("mc-round: theorem-6.9 narrows its positional family with family=given",
+          "[mc][round][theorem-6.9]") {
+  const checker::PropertyResult r =
+      run("theorem-6.9", {"m=1", "nbh=4", "family=given", "n=2", "k=1", "rho1=1/2", "rho2=1/2"});
+  // One region: no neighbour to send to, so the assignment is fixed at once either way.
+  CHECK(r.verdict == Verdict::holds);
+  CHECK_THAT(figure(r, "covered (positions)"),
+             Catch::StartsWith("m x m grids of side 1, m in {1 (eastward, westward, L)}"));
+  CHECK_THAT(figure(r, "covered (positions)"), Catch::Contains("0..2 robots per region"));
 }
 
 TEST_CASE("mc-round: the fixed-point search holds on N samples, the same for every thread "
