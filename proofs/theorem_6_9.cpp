@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -135,6 +136,91 @@ struct Outcome {
   std::size_t rounds = 0;
 };
 
+// Whether a round starting with `counts` could certify (PositionSystem::certifies_fixed
+// without its "nobody migrates" part, which depends on positions): assign moves nobody and,
+// under Membership::position, every region meeting Γ owns inf P_h when it has a robot and
+// sup P_h when it has two.
+bool certifiable(const mc::PositionSystem& system, const Counts& counts) {
+  if (!system.counts().flow(counts).empty())
+    return false;
+  if (system.options().membership == mc::Membership::assigned)
+    return true;
+  const mc::ExactCurve& curve = system.curve();
+  for (RegionId h = 0; h < curve.size(); ++h)
+    if (counts[h] > 0 && curve.meets(h) &&
+        (!curve.local(h).inf_owned || (counts[h] >= 2 && !curve.local(h).sup_owned)))
+      return false;
+  return true;
+}
+
+} // namespace
+
+// A proof that the assignment never becomes fixed, for runs that neither certify nor recur.
+// The assignment is fixed from round t on iff round t certifies (positions.cpp: if assign
+// moves nobody and nobody migrates in round t but an end condition fails, round t + 1 sends a
+// robot to that non-owned end). Over-approximate the counts of every later round: each round
+// applies assign's flow (a function of the counts) and then any number of the robots that
+// stay in a region h may migrate to the owners of h's non-owned ends (calctarget lines 33,
+// 35, 36 are the only ways out). If no count vector reachable so (the current one included)
+// is certifiable, no later round certifies. Gives up (false) beyond 100 000 count vectors.
+bool never_fixed_by_counts(const mc::PositionSystem& system, const std::vector<mc::Robot>& now) {
+  if (system.options().membership != mc::Membership::position)
+    return false;
+  const mc::ExactCurve& curve = system.curve();
+  // The owners of each region's non-owned ends.
+  std::vector<std::vector<RegionId>> exits(curve.size());
+  for (RegionId h = 0; h < curve.size(); ++h) {
+    if (!curve.meets(h))
+      continue;
+    const mc::ExactLocalPart& part = curve.local(h);
+    if (!part.inf_owned)
+      exits[h].push_back(curve.region_of(curve.point(h, 0)));
+    if (!part.sup_owned)
+      exits[h].push_back(curve.region_of(curve.point(h, part.length)));
+  }
+  Counts start(curve.size(), 0);
+  for (const mc::Robot& robot : now)
+    ++start[system.member_of(robot)];
+  std::set<Counts> seen{start};
+  std::vector<Counts> frontier{start};
+  while (!frontier.empty()) {
+    const Counts counts = frontier.back();
+    frontier.pop_back();
+    if (certifiable(system, counts))
+      return false;
+    const mc::Flow flow = system.counts().flow(counts);
+    const Counts after = flow.apply(counts);
+    // Every way the staying robots of each region can leave through its exits.
+    std::vector<Counts> successors{after};
+    for (RegionId h = 0; h < curve.size(); ++h) {
+      if (exits[h].empty())
+        continue;
+      const RobotCount staying = counts[h] - flow.sent_by(h);
+      std::vector<Counts> more;
+      for (const Counts& base : successors)
+        for (RobotCount a = 0; a <= staying; ++a)
+          for (RobotCount b = 0; a + b <= staying && (b == 0 || exits[h].size() == 2); ++b) {
+            Counts next = base;
+            next[h] -= a + b;
+            next[exits[h][0]] += a;
+            if (b > 0)
+              next[exits[h][1]] += b;
+            more.push_back(std::move(next));
+          }
+      successors = std::move(more);
+    }
+    for (Counts& next : successors)
+      if (seen.insert(next).second) {
+        if (seen.size() > 100'000)
+          return false;
+        frontier.push_back(std::move(next));
+      }
+  }
+  return true;
+}
+
+namespace {
+
 Outcome run_one(const mc::PositionSystem& system, const std::vector<mc::Robot>& start, int m,
                 const PositionalFamily& family) {
   Outcome outcome;
@@ -177,6 +263,11 @@ Outcome run_one(const mc::PositionSystem& system, const std::vector<mc::Robot>& 
   } else if (period_start) {
     fix.why = "periodic from round " + std::to_string(*period_start) + " with no robot changing VN";
     fixed_from = period_start;
+  } else if (never_fixed_by_counts(system, states.back())) {
+    fix.violated = true;
+    fix.why = "after " + std::to_string(rounds.size()) +
+              " rounds no count vector that assign and any migrations can reach lets a round "
+              "certify: never fixed";
   } else {
     fix.decided = false;
     fix.why =

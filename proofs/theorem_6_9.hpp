@@ -25,7 +25,10 @@
 //     PositionSystem::certifies_fixed proves it fixed for ever; a state (every robot's
 //     position and VN) that repeats an earlier one with some robot changing VN in between
 //     proves it never fixed (the round is deterministic, so the run is periodic from there).
-//     Neither within max_rounds: undecided, and the verdict is at best incomplete.
+//     Neither within max_rounds: a proof by over-approximation is tried (no count vector
+//     that assign and any migrations can reach lets a round certify: never fixed; see
+//     never_certifiable in the .cpp); failing that, undecided, and the verdict is at best
+//     incomplete.
 //   - "proportional": at the fixed assignment, max |y_u/q_u − y_v/q_v| over In ≤ the bound.
 //   - "on curve": at round T + 2 (T the certified round) every robot of a region on the
 //     curve lies on the closure of Γ_u.
@@ -102,6 +105,11 @@ struct TheoremCheck {
 
   const PositionalTally& claim(std::string_view id) const; // std::out_of_range if unknown
 };
+
+// Under Membership::position, a proof that the assignment of a run now at `robots` never
+// becomes fixed: no count vector that assign and any migrations through the non-owned ends
+// of Γ can reach lets a round certify (see the .cpp). False: no proof (not: "it does").
+bool never_fixed_by_counts(const mc::PositionSystem& system, const std::vector<mc::Robot>& robots);
 
 // The default positional family: the one above.
 TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamily& positions = {},

@@ -81,3 +81,31 @@ TEST_CASE("theorem 6.9: the counterexample is printed round by round", "[proofs]
   CHECK(printed);
   CHECK_THROWS_AS(check.claim("6.9(1) fixed [assigned]"), std::out_of_range);
 }
+
+TEST_CASE("theorem 6.9: a run whose positions never recur is proven never fixed",
+          "[proofs][theorem-6.9]") {
+  // 6 robots on the westward line (y = 3/2, from x = 2 to x = 0) of a 2×2 grid, as found by
+  // the family: the counts cycle (0,1,0,5) → (0,1,1,4) → (0,1,1,4) → … while region 3's robots
+  // keep converging, so no state recurs exactly. Region 2's Γ starts at (1,3/2), which region
+  // 3 owns: a round can certify only with region 2 empty, and then region 3 sends it a robot.
+  const NamedCurve westward = positional_curves(2)[1];
+  REQUIRE(westward.name == "westward");
+  const mc::PositionSystem system(
+      mc::ExactCurve(westward.curve, mc::GridTiling(2, mc::Neighbourhood::four), {1, 4}),
+      {1, {1, 2}, {9, 10}}, {mc::Membership::position});
+  auto robot = [](mc::RobotId id, mc::Rational x, mc::Rational y) {
+    return mc::Robot{id, {std::move(x), std::move(y)}, std::nullopt};
+  };
+  const std::vector<mc::Robot> start{robot(0, {3, 2}, {1, 2}), robot(1, {9, 8}, {1, 8}),
+                                     robot(2, {1, 2}, {3, 2}), robot(3, {1, 8}, {9, 8}),
+                                     robot(4, {3, 2}, {3, 2}), robot(5, {9, 8}, {9, 8})};
+  const mc::PositionRun run = system.run(start, 40);
+  CHECK_FALSE(run.fixed_from);
+  for (std::size_t t = 3; t < run.rounds.size(); ++t)
+    CHECK(run.rounds[t].counts[2] <= 1);
+  CHECK(never_fixed_by_counts(system, run.last));
+  // The same line with 2 robots in region 3 only becomes fixed, and no proof is claimed.
+  const std::vector<mc::Robot> two{robot(0, {3, 2}, {3, 2}), robot(1, {7, 4}, {3, 2})};
+  CHECK(system.run(two, 6).fixed_from);
+  CHECK_FALSE(never_fixed_by_counts(system, two));
+}
