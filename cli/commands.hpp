@@ -20,6 +20,7 @@ int command_explore(const ModelRequest& request, const std::string& from,
                     const RunSettings& settings);
 
 // Every suite entry of every model against its expected verdict.
-int command_suite(const RunSettings& settings);
+// `only`: the models whose entries run (empty: every model).
+int command_suite(const RunSettings& settings, const std::vector<std::string>& only = {});
 
 } // namespace cli

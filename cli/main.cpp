@@ -138,6 +138,9 @@ int main(int argc, char** argv) {
 
   CLI::App* suite = app.add_subcommand(
       "suite", "run every model's suite against the expected verdicts (the CI run)");
+  std::vector<std::string> suite_models;
+  suite->add_option("--model", suite_models, "run only this model's entries (repeatable)")
+      ->type_name("MODEL");
   add_run_options(suite, settings, limits, trace, false);
 
   cli::RoundRequest round_request;
@@ -201,7 +204,7 @@ int main(int argc, char** argv) {
       return cli::command_round(round_request);
     if (simulate->parsed())
       return cli::command_simulate(simulate_request);
-    return cli::command_suite(settings);
+    return cli::command_suite(settings, suite_models);
   } catch (const models::UsageError& e) {
     return fail(e.what());
   } catch (const tioa::ModelError& e) {

@@ -1,6 +1,7 @@
 // The suite: every SuiteEntry of every model, checked against its expected verdict. This
 // is the run CI pipelines call after a model change.
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <map>
@@ -84,13 +85,17 @@ Json suite_json(const std::vector<SuiteRow>& rows, bool all_as_expected) {
 
 } // namespace
 
-int command_suite(const RunSettings& settings) {
+int command_suite(const RunSettings& settings, const std::vector<std::string>& only) {
   const auto started = std::chrono::steady_clock::now();
+  for (const std::string& name : only)
+    models::find_model(name); // an unknown model is a usage error, before anything runs
   // Resolve every entry first: a bad entry is reported before anything runs.
   std::vector<SuiteRow> rows;
   Columns columns;
   for (const auto& def : models::all_models())
     for (const auto& entry : def.suite) {
+      if (!only.empty() && std::find(only.begin(), only.end(), def.name) == only.end())
+        continue;
       SuiteRow row;
       row.definition = &def;
       row.entry = &entry;
