@@ -1,0 +1,62 @@
+#include "models/vlayer_mc/cn.hpp"
+
+#include "models/vlayer_mc/names.hpp"
+#include "models/vlayer_mc/rw.hpp"
+
+namespace vlayer {
+
+using tioa::Params;
+using tioa::State;
+
+tioa::Automaton cn(const VlConfig& c, int p) {
+  const Lattice lattice = c.lattice();
+  const int points = lattice.points();
+  tioa::Automaton a("cn");
+  const auto clock = a.optional_integer("clock", 0, c.delta - 1);
+  const auto x = a.optional_integer("x", 0, points - 1);
+  const auto target = a.optional_integer("target", 0, points - 1);
+  const auto v = a.optional_integer("v", zero_velocity, points - 1);
+  const auto since = a.clock("since", 1, 1);
+
+  // D5: 0 without a position or a target, or on the target; else steer to the target.
+  const auto desired = [=](const State& s) {
+    if (s.is_bottom(x) || s.is_bottom(target) || s[x] == s[target])
+      return zero_velocity;
+    return static_cast<int>(s[target]);
+  };
+  const auto velocity_due = [=](const State& s) { return s.is_bottom(v) || s[v] != desired(s); };
+  const auto cn_update_due = [=](const State& s) {
+    return !s.is_bottom(clock) && s[clock] == 0 && s[since] >= 1 && !s.is_bottom(x);
+  };
+
+  a.input(names::gps_update(p), {{"l", 0, points - 1}, {"t", 0, c.delta - 1}})
+      .eff([=](State& s, const Params& m) {
+        s[x] = m[0];
+        s[clock] = m[1];
+      });
+  a.output(names::vcast_cn_update(p), {{"l", 0, points - 1}})
+      .pre([=](const State& s, const Params& m) { return cn_update_due(s) && m[0] == s[x]; })
+      .eff([=](State& s, const Params&) {
+        s[since] = 0;
+        s.set_bottom(target);
+      });
+  a.input(names::vrcv_target_update(p), {{"u", 0, lattice.regions() - 1}, {"x", 0, points - 1}})
+      .eff([=](State& s, const Params& m) { s[target] = m[1]; });
+  a.output(names::velocity(p), {{"v", zero_velocity, points - 1}})
+      .pre([=](const State& s, const Params& m) { return velocity_due(s) && m[0] == desired(s); })
+      .eff([=](State& s, const Params& m) { s[v] = m[0]; });
+
+  const int delta = c.delta, vmax = c.vmax;
+  a.trajectories(
+      [=](State& s) {
+        if (!s.is_bottom(clock))
+          s[clock] = (s[clock] + 1) % delta;
+        s.advance(since);
+        if (!s.is_bottom(x) && !s.is_bottom(v) && s[v] != zero_velocity)
+          s[x] = lattice.step_toward(s[x], s[v], vmax);
+      },
+      [=](const State& s) { return cn_update_due(s) || velocity_due(s); });
+  return a;
+}
+
+} // namespace vlayer

@@ -1,0 +1,37 @@
+#pragma once
+// The parameters of VLayer[MC] (issue 4 names): the grid, the robots, the lattice, and the
+// constants of seed 000 §4–5, every time a whole number of quanta.
+
+#include <optional>
+#include <string>
+
+#include "models/mc/rational.hpp"
+#include "models/vlayer_mc/lattice.hpp"
+
+namespace vlayer {
+
+struct VlConfig {
+  int rows = 1, cols = 2;
+  mc::Neighbourhood nbh = mc::Neighbourhood::four;
+  int robots = 1;
+  int b = 2; // lattice units per region side
+  // The cheap constants of the README: 0 + 3 + 0 + 1 + 1 = 5 < δ = 6.
+  int delta = 6, d = 1, e = 0, eps = 0, eps_sample = 1, d_r = 1, vmax = 4;
+  int k = 1;
+  mc::Rational rho1{1, 2}, rho2{9, 10};
+
+  Lattice lattice() const { return Lattice(rows, cols, b, nbh); }
+  // Phases (clock mod δ) at which VN_u sends its vn-update and computes the targets (D1).
+  int vn_update_phase() const { return e + d + eps; }
+  int target_phase() const { return e + 2 * d + 2 * eps; }
+};
+
+// 2e + 3d + 2ε + ⌈r/v_max⌉ + d_r: δ must exceed it (seed 000 §5.5, line 981).
+int round_length_bound(const VlConfig& config);
+bool round_length_ok(const VlConfig& config);
+
+// Why the values cannot build a model (ranges, b, the target phase within the round), or
+// nullopt. The round-length rule is not checked here: breaking it is a question to ask.
+std::optional<std::string> invalid(const VlConfig& config);
+
+} // namespace vlayer

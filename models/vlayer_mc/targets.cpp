@@ -1,0 +1,69 @@
+#include "models/vlayer_mc/targets.hpp"
+
+#include <algorithm>
+
+#include "models/mc/spacing.hpp"
+
+namespace vlayer {
+
+std::vector<mc::QuantisedLength> curve_q(const Lattice& lattice) {
+  std::vector<mc::QuantisedLength> q(static_cast<std::size_t>(lattice.regions()), 0);
+  for (int col = 0; col < lattice.cols(); ++col)
+    q[static_cast<std::size_t>(col)] = lattice.b();
+  return q;
+}
+
+std::vector<std::optional<Point>> compute_targets(const VlConfig& c, RegionId u,
+                                                  const std::vector<std::optional<Point>>& reported,
+                                                  const std::vector<int>& counts) {
+  const Lattice lattice = c.lattice();
+  const auto q = curve_q(lattice);
+  const auto& nbrs = lattice.nbrs(u);
+  std::vector<int> members; // dom M_u, by increasing id
+  for (std::size_t p = 0; p < reported.size(); ++p)
+    if (reported[p])
+      members.push_back(static_cast<int>(p));
+
+  mc::VnView view;
+  view.h = static_cast<mc::RegionId>(u);
+  view.y = static_cast<mc::RobotCount>(members.size());
+  view.q = q[static_cast<std::size_t>(u)];
+  for (std::size_t i = 0; i < nbrs.size(); ++i)
+    view.neighbours.push_back(
+        {static_cast<mc::RegionId>(nbrs[i]), counts.at(i), q[static_cast<std::size_t>(nbrs[i])]});
+  const mc::AssignResult plan = mc::assign(view, mc::AssignParams(c.k, c.rho2));
+
+  std::vector<std::optional<Point>> target(reported.size());
+  std::size_t next = 0; // lowest ids first (line 11)
+  for (std::size_t i = 0; i < nbrs.size(); ++i)
+    for (mc::RobotCount sent = 0; sent < plan.sent[i]; ++sent)
+      target[static_cast<std::size_t>(members[next++])] = lattice.centre(nbrs[i]); // line 31
+
+  const bool on_curve_region = q[static_cast<std::size_t>(u)] != 0;
+  const int b = lattice.b(), inf = (u % lattice.cols()) * b, sup = inf + b, curve_y = b / 2;
+  std::vector<std::pair<int, int>> seq; // (x, id) of the staying robots on Γ_u (line 27)
+  for (std::size_t i = next; i < members.size(); ++i) {
+    const int p = members[i];
+    const Point at = *reported[static_cast<std::size_t>(p)];
+    const int x = lattice.x_of(at), y = lattice.y_of(at);
+    if (!on_curve_region)
+      target[static_cast<std::size_t>(p)] = at; // Γ_u = ∅: keeps its position
+    else if (y != curve_y || x < inf || x > sup)
+      target[static_cast<std::size_t>(p)] =
+          lattice.point(std::clamp(x, inf, sup), curve_y); // line 33
+    else
+      seq.emplace_back(x, p);
+  }
+  std::sort(seq.begin(), seq.end());
+  std::vector<mc::Rational> sorted;
+  for (const auto& [x, p] : seq)
+    sorted.emplace_back(x);
+  const auto moved = mc::spacing_step(sorted, mc::Rational(inf), mc::Rational(sup), c.rho1);
+  for (std::size_t i = 0; i < seq.size(); ++i) {
+    const int x = mc::floor_of(moved[i]).convert_to<int>();
+    target[static_cast<std::size_t>(seq[i].second)] = lattice.point(x, curve_y); // lines 35–38
+  }
+  return target;
+}
+
+} // namespace vlayer

@@ -1,0 +1,34 @@
+#pragma once
+// What VN_u computes at phase e + 2d + 2ε (seed 000 §5.4 lines 876–965; seed 002 Fig. 7):
+// assign on counts (mc::assign, default order) and calctarget on the lattice. A pure
+// function, so that it is tested apart from the automaton.
+//
+// The curve of the first instances (README, "Discretisation"): Γ is the horizontal line
+// y = b/2 through row 0, parameterised by x; Γ_u is [col·b, (col+1)·b] on it for a row-0
+// region u (q_u = b in units of σ = 1), empty elsewhere (q_u = 0).
+//
+// Which robots are reassigned (line 11 does not say): VN_u's robots by increasing id, the
+// first ra to the first g (increasing region id), as mc::Reassignment::lowest_ids.
+// calctarget (Fig. 7): line 31 → o_g; line 33 → the nearest point of the closure of Γ_u
+// (Γ_u = ∅: the robot keeps its position, as mc::TargetRule::off_curve); lines 35–38 →
+// mc::spacing_step on the x of the robots on Γ_u, sorted by (x, id), rounded down to the
+// lattice.
+
+#include <optional>
+#include <vector>
+
+#include "models/mc/assign.hpp"
+#include "models/vlayer_mc/config.hpp"
+
+namespace vlayer {
+
+// q_u in units of σ for every region (the curve above).
+std::vector<mc::QuantisedLength> curve_q(const Lattice& lattice);
+
+// reported[p]: M_u(p) (nullopt: p ∉ dom M_u); counts[i]: V_u(nbrs(u)[i]).
+// Returns the target of every p ∈ dom M_u (nullopt for the others).
+std::vector<std::optional<Point>> compute_targets(const VlConfig& config, RegionId u,
+                                                  const std::vector<std::optional<Point>>& reported,
+                                                  const std::vector<int>& counts);
+
+} // namespace vlayer

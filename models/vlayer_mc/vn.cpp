@@ -1,0 +1,107 @@
+#include "models/vlayer_mc/vn.hpp"
+
+#include <algorithm>
+
+#include "models/vlayer_mc/names.hpp"
+#include "models/vlayer_mc/targets.hpp"
+
+namespace vlayer {
+
+using tioa::Params;
+using tioa::State;
+
+tioa::Automaton vn(const VlConfig& c, RegionId u) {
+  const Lattice lattice = c.lattice();
+  const int n = c.robots, points = lattice.points(), regions = lattice.regions();
+  const auto& nbrs = lattice.nbrs(u);
+  tioa::Automaton a("vn");
+  const auto clock = a.optional_integer("clock", 0, c.delta - 1);
+  tioa::VariableArray<int> M, out;
+  for (int p = 0; p < n; ++p)
+    M.items.push_back(a.optional_integer("M[" + std::to_string(p) + "]", 0, points - 1));
+  tioa::VariableArray<int> V;
+  for (const RegionId g : nbrs)
+    V.items.push_back(a.integer("V[" + std::to_string(g) + "]", 0, n, 0));
+  for (int p = 0; p < n; ++p)
+    out.items.push_back(a.optional_integer("out[" + std::to_string(p) + "]", 0, points - 1));
+  const auto since = a.clock("since", 1, 1);
+
+  const int vn_phase = c.vn_update_phase(), target_phase = c.target_phase();
+  const auto at_phase = [=](const State& s, int phase) {
+    return !s.is_bottom(clock) && s[clock] == phase && s[since] >= 1;
+  };
+  const auto reported = [=](const State& s) {
+    int count = 0;
+    for (int p = 0; p < n; ++p)
+      count += s.is_bottom(M[p]) ? 0 : 1;
+    return count;
+  };
+  const auto sending = [=](const State& s) {
+    for (int p = 0; p < n; ++p)
+      if (!s.is_bottom(out[p]))
+        return true;
+    return false;
+  };
+
+  a.input(names::time(u), {{"t", 0, c.delta - 1}}).eff([=](State& s, const Params& m) {
+    s[clock] = m[0];
+  });
+  a.input(names::vrcv_cn_update(u), {{"p", 0, n - 1}, {"l", 0, points - 1}})
+      .eff([=](State& s, const Params& m) {
+        if (lattice.region_of(m[1]) == u)
+          s[M[m[0]]] = m[1];
+      });
+  a.input(names::vrcv_vn_update(u), {{"g", 0, regions - 1}, {"n", 0, n}})
+      .eff([=](State& s, const Params& m) {
+        const auto at = std::find(nbrs.begin(), nbrs.end(), m[0]);
+        if (at != nbrs.end())
+          s[V.items[static_cast<std::size_t>(at - nbrs.begin())]] = m[1];
+      });
+  a.output(names::vcast_vn_update(u), {{"n", 0, n}})
+      .pre([=](const State& s, const Params& m) {
+        return at_phase(s, vn_phase) && m[0] == reported(s);
+      })
+      .eff([=](State& s, const Params&) { s[since] = 0; });
+  const VlConfig config = c;
+  a.internal("compute_" + std::to_string(u))
+      .pre([=](const State& s, const Params&) { return at_phase(s, target_phase); })
+      .eff([=](State& s, const Params&) {
+        std::vector<std::optional<Point>> heard(static_cast<std::size_t>(n));
+        for (int p = 0; p < n; ++p)
+          if (!s.is_bottom(M[p]))
+            heard[static_cast<std::size_t>(p)] = s[M[p]];
+        std::vector<int> counts;
+        for (const auto& count : V)
+          counts.push_back(s[count]);
+        const auto targets = compute_targets(config, u, heard, counts);
+        for (int p = 0; p < n; ++p) {
+          if (targets[static_cast<std::size_t>(p)])
+            s[out[p]] = *targets[static_cast<std::size_t>(p)];
+          else
+            s.set_bottom(out[p]);
+          s.set_bottom(M[p]);
+        }
+        for (const auto& count : V)
+          s[count] = 0;
+        s[since] = 0;
+      });
+  a.output(names::vcast_target_update(u), {{"p", 0, n - 1}, {"x", 0, points - 1}})
+      .pre([=](const State& s, const Params& m) {
+        return !s.is_bottom(out[m[0]]) && s[out[m[0]]] == m[1];
+      })
+      .eff([=](State& s, const Params& m) { s.set_bottom(out[m[0]]); });
+
+  const int delta = c.delta;
+  a.trajectories(
+      [=](State& s) {
+        if (!s.is_bottom(clock))
+          s[clock] = (s[clock] + 1) % delta;
+        s.advance(since);
+      },
+      [=](const State& s) {
+        return at_phase(s, vn_phase) || at_phase(s, target_phase) || sending(s);
+      });
+  return a;
+}
+
+} // namespace vlayer

@@ -1,0 +1,40 @@
+#include "models/vlayer_mc/vw.hpp"
+
+#include "models/vlayer_mc/names.hpp"
+
+namespace vlayer {
+
+using tioa::Params;
+using tioa::State;
+
+tioa::Automaton vw(const VlConfig& c, bool vsa_faults) {
+  const int regions = c.lattice().regions();
+  tioa::Automaton a("VW");
+  const auto now = a.integer("now", 0, c.delta - 1, 0);
+  const auto age = a.clocks("age", regions, c.eps_sample, c.eps_sample);
+  for (int u = 0; u < regions; ++u) {
+    a.output(names::time(u), {{"t", 0, c.delta - 1}})
+        .pre([=](const State& s, const Params& x) { return s[age[u]] >= 1 && x[0] == s[now]; })
+        .eff([=](State& s, const Params&) { s[age[u]] = 0; });
+    if (vsa_faults) {
+      a.output(names::fail_vn(u));
+      a.output(names::restart_vn(u));
+    }
+  }
+  const int delta = c.delta, eps_sample = c.eps_sample;
+  a.trajectories(
+      [=](State& s) {
+        s[now] = (s[now] + 1) % delta;
+        for (int u = 0; u < regions; ++u)
+          s.advance(age[u]);
+      },
+      [=](const State& s) {
+        for (int u = 0; u < regions; ++u)
+          if (s[age[u]] >= eps_sample)
+            return true;
+        return false;
+      });
+  return a;
+}
+
+} // namespace vlayer
