@@ -116,22 +116,6 @@ SampleRun run_sample(const FixpointLemma& lemma, const FixpointSample& sample,
   return out;
 }
 
-// The sample without row `row` and column `col`.
-FixpointSample without(const FixpointSample& sample, int row, int col) {
-  const int m = sample.setting.m;
-  FixpointSample out = sample;
-  out.setting.m = m - 1;
-  out.setting.q.clear();
-  out.start.clear();
-  for (int r = 0; r < m; ++r)
-    for (int c = 0; c < m; ++c)
-      if (r != row && c != col) {
-        out.setting.q.push_back(sample.setting.q[static_cast<std::size_t>(r * m + c)]);
-        out.start.push_back(sample.start[static_cast<std::size_t>(r * m + c)]);
-      }
-  return out;
-}
-
 std::string describe_search(const FixpointSearchOptions& o) {
   std::vector<std::string> ks, rho2s;
   for (RobotCount k : o.ks)
@@ -189,78 +173,15 @@ std::optional<BoundWitness> fixpoint_violation(const FixpointLemma& lemma, std::
 BoundWitness shrink_fixpoint(const FixpointLemma& lemma, std::size_t claim,
                              const BoundWitness& start, std::size_t max_rounds) {
   BoundWitness best = start;
-  FixpointSample current{start.setting, start.start};
-  auto attempt = [&](const FixpointSample& candidate) {
-    if (auto found = fixpoint_violation(lemma, claim, candidate, max_rounds)) {
-      best = std::move(*found);
-      current = candidate;
-      return true;
-    }
-    return false;
-  };
-  for (bool changed = true; changed;) {
-    changed = false;
-    // A smaller grid.
-    for (bool smaller_grid = true; smaller_grid && current.setting.m > 1;) {
-      smaller_grid = false;
-      for (int row = 0; row < current.setting.m && !smaller_grid; ++row)
-        for (int col = 0; col < current.setting.m && !smaller_grid; ++col)
-          smaller_grid = attempt(without(current, row, col));
-      changed |= smaller_grid;
-    }
-    // Fewer robots, all together.
-    for (auto [num, den] :
-         std::vector<std::pair<RobotCount, RobotCount>>{{1, 2}, {2, 3}, {3, 4}, {7, 8}, {15, 16}})
-      for (bool scaled = true; scaled;) {
-        FixpointSample candidate = current;
-        for (RobotCount& c : candidate.start)
-          c = c == 0 ? 0 : std::max<RobotCount>(1, c * num / den);
-        scaled = candidate.start != current.start && attempt(candidate);
-        changed |= scaled;
-      }
-    // Smaller counts, one region at a time: to 0, then by halves, then by 1.
-    for (std::size_t u = 0; u < current.start.size(); ++u)
-      for (bool lowered = true; lowered && current.start[u] > 0;) {
-        lowered = false;
-        const RobotCount value = current.start[u];
-        std::vector<RobotCount> tries{0};
-        for (RobotCount step = value / 2; step >= 1; step /= 2)
-          tries.push_back(value - step);
-        for (RobotCount to : tries) {
-          FixpointSample candidate = current;
-          candidate.start[u] = to;
-          if (to < value && attempt(candidate)) {
-            lowered = changed = true;
-            break;
-          }
-        }
-      }
-    // A smaller k.
-    for (RobotCount k = 1; k < current.setting.k; ++k) {
-      FixpointSample candidate = current;
-      candidate.setting.k = k;
-      if (attempt(candidate)) {
-        changed = true;
-        break;
-      }
-    }
-    // Smaller q: to 0, else one less.
-    for (std::size_t u = 0; u < current.setting.q.size(); ++u)
-      for (QuantisedLength to : {QuantisedLength{0}, current.setting.q[u] - 1}) {
-        if (to < 0 || to >= current.setting.q[u])
-          continue;
-        FixpointSample candidate = current;
-        candidate.setting.q[u] = to;
-        if (attempt(candidate)) {
-          changed = true;
-          break;
-        }
-      }
-  }
-  if (best.setting.q != start.setting.q || best.setting.m != start.setting.m)
-    best.setting.curve = start.setting.curve.rfind("shrunk", 0) == 0
-                             ? start.setting.curve
-                             : "shrunk from " + start.setting.curve;
+  const Instance smallest =
+      shrink_instance({start.setting, start.start}, [&](const Instance& candidate) {
+        auto found =
+            fixpoint_violation(lemma, claim, {candidate.setting, candidate.counts}, max_rounds);
+        if (found)
+          best = std::move(*found);
+        return found.has_value();
+      });
+  best.setting.curve = smallest.setting.curve;
   return best;
 }
 

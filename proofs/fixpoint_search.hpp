@@ -66,11 +66,9 @@ std::optional<BoundWitness> fixpoint_violation(const FixpointLemma& lemma, std::
                                                const FixpointSample& sample,
                                                std::size_t max_rounds = 100'000);
 
-// Shrinks a violation of claims[claim] while it stays one, greedily, until nothing shrinks:
-// remove a row and a column; scale every count by 1/2, 2/3, 3/4, 7/8, 15/16 (a region with
-// robots keeps one); lower each count alone (to 0, then by halves, then by 1); lower k;
-// lower each q (to 0, then by 1). Deterministic. The curve of a shrunk grid or q is named
-// "shrunk from <curve>".
+// Shrinks a violation of claims[claim] while it stays one, with the one-step lemmas'
+// shrinker (proofs/round_lemma.hpp, shrink_instance). Deterministic. The curve of a shrunk
+// grid or q is named "shrunk from <curve>".
 BoundWitness shrink_fixpoint(const FixpointLemma& lemma, std::size_t claim,
                              const BoundWitness& start, std::size_t max_rounds = 100'000);
 

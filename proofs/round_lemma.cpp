@@ -4,6 +4,7 @@
 #include <array>
 #include <atomic>
 #include <chrono>
+#include <functional>
 #include <stdexcept>
 #include <thread>
 #include <tuple>
@@ -427,18 +428,13 @@ Instance without(const Instance& instance, int row, int col) {
 
 } // namespace
 
-RoundCounterexample shrink(const RoundLemma& lemma, std::size_t claim,
-                           const RoundCounterexample& start, std::size_t outcome_limit,
-                           std::size_t sampled) {
-  RoundCounterexample best = start;
-  Instance current{start.setting, start.before};
+Instance shrink_instance(const Instance& start, const std::function<bool(const Instance&)>& fails) {
+  Instance current = start;
   auto attempt = [&](const Instance& candidate) {
-    if (auto found = find_violation(lemma, claim, candidate, outcome_limit, sampled)) {
-      best = std::move(*found);
-      current = candidate;
-      return true;
-    }
-    return false;
+    if (!fails(candidate))
+      return false;
+    current = candidate;
+    return true;
   };
   for (bool changed = true; changed;) {
     changed = false;
@@ -534,17 +530,32 @@ RoundCounterexample shrink(const RoundLemma& lemma, std::size_t claim,
           continue;
         Instance candidate = current;
         candidate.setting.q[u] = to;
-        candidate.setting.curve = "shrunk";
         if (attempt(candidate)) {
           changed = true;
           break;
         }
       }
   }
-  if (best.setting.q != start.setting.q || best.setting.m != start.setting.m)
-    best.setting.curve = start.setting.curve == "random" || start.setting.curve == "shrunk"
-                             ? "shrunk"
-                             : "shrunk from " + start.setting.curve;
+  if (current.setting.q != start.setting.q || current.setting.m != start.setting.m)
+    current.setting.curve =
+        start.setting.curve == "random" || start.setting.curve == "shrunk" ? "shrunk"
+        : start.setting.curve.rfind("shrunk", 0) == 0                      ? start.setting.curve
+                                                      : "shrunk from " + start.setting.curve;
+  return current;
+}
+
+RoundCounterexample shrink(const RoundLemma& lemma, std::size_t claim,
+                           const RoundCounterexample& start, std::size_t outcome_limit,
+                           std::size_t sampled) {
+  RoundCounterexample best = start;
+  const Instance smallest =
+      shrink_instance({start.setting, start.before}, [&](const Instance& candidate) {
+        auto found = find_violation(lemma, claim, candidate, outcome_limit, sampled);
+        if (found)
+          best = std::move(*found);
+        return found.has_value();
+      });
+  best.setting.curve = smallest.setting.curve;
   return best;
 }
 

@@ -168,6 +168,14 @@ std::optional<RoundCounterexample> find_violation(const RoundLemma& lemma, std::
 // counts (all, those on the curve, those off it) by the same amount; lower the regions of
 // one count together; lower each count alone (to 0, then by halves, then by 1); lower k;
 // lower each q (to 0, then by 1). Deterministic.
+// The shrinker both searches use (this one and proofs/fixpoint_search.hpp): greedily, while
+// `fails` still holds of the smaller instance, until nothing shrinks — remove a row and a
+// column; scale every count down together; lower every region with robots (or those on /
+// off the curve) by the same number; lower a plateau of equal counts, then each region
+// alone; a smaller k; a smaller q. Returns the last instance `fails` accepted (`start` if
+// none), its curve renamed "shrunk from …" when q or m changed.
+Instance shrink_instance(const Instance& start, const std::function<bool(const Instance&)>& fails);
+
 RoundCounterexample shrink(const RoundLemma& lemma, std::size_t claim,
                            const RoundCounterexample& start, std::size_t outcome_limit = 4'096,
                            std::size_t sampled = 64);
