@@ -12,12 +12,12 @@
 
 namespace vlayer {
 
-std::vector<tioa::Automaton> vlnodes_components(const VlConfig& c) {
+std::vector<tioa::Automaton> vlnodes_components(const VlConfig& c, Faults faults) {
   std::vector<tioa::Automaton> nodes;
   for (int p = 0; p < c.robots; ++p) {
     const std::string name = names::cn_name(p);
-    nodes.push_back(tioa::Fail(tioa::compose(name, {vbdelay(c, p), cn(c, p)}),
-                               {"fail_" + name, "restart_" + name}));
+    tioa::Automaton node = tioa::compose(name, {vbdelay(c, p), cn(c, p)});
+    nodes.push_back(faults.robots ? tioa::Fail(node, {"fail_" + name, "restart_" + name}) : node);
   }
   for (RegionId u = 0; u < c.lattice().regions(); ++u) {
     tioa::Automaton node = vn(c, u);
@@ -27,18 +27,18 @@ std::vector<tioa::Automaton> vlnodes_components(const VlConfig& c) {
   return nodes;
 }
 
-tioa::Automaton vlnodes(const VlConfig& c) {
-  return tioa::compose("VLNodes", vlnodes_components(c));
+tioa::Automaton vlnodes(const VlConfig& c, Faults faults) {
+  return tioa::compose("VLNodes", vlnodes_components(c, faults));
 }
 
-tioa::Automaton environment(const VlConfig& c, bool vsa_faults) {
-  return tioa::compose("RW||VW||VBcast", {rw(c), vw(c, vsa_faults), vbcast(c)});
+tioa::Automaton environment(const VlConfig& c, Faults faults) {
+  return tioa::compose("RW||VW||VBcast", {rw(c), vw(c, faults.vsas), vbcast(c)});
 }
 
-tioa::Automaton vlayer(const VlConfig& c, bool vsa_faults) {
-  std::vector<tioa::Automaton> parts = vlnodes_components(c);
+tioa::Automaton vlayer(const VlConfig& c, Faults faults) {
+  std::vector<tioa::Automaton> parts = vlnodes_components(c, faults);
   parts.push_back(rw(c));
-  parts.push_back(vw(c, vsa_faults));
+  parts.push_back(vw(c, faults.vsas));
   parts.push_back(vbcast(c));
   return tioa::compose("VLayer", parts);
 }

@@ -16,12 +16,21 @@
 
 namespace vlayer {
 
-// The fail-transformed nodes, in the order CN_0..CN_{N−1}, VN_0..VN_{|U|−1}.
-std::vector<tioa::Automaton> vlnodes_components(const VlConfig& config);
-tioa::Automaton vlnodes(const VlConfig& config);
+// Which failures the system has. With robots = false the nodes VBDelay_p ‖ CN_p are not
+// fail-transformed: the executions of Fail(A) in which no fail occurs (failed stays false)
+// are those of A, so this is VLayer[MC] from t0 on, after the last robot failure or restart.
+// vsa = false: VW issues no fail_u/restart_u (D13); Fail(VN_u) keeps its inputs.
+struct Faults {
+  bool robots = true;
+  bool vsas = false;
+};
+
+// The nodes, in the order CN_0..CN_{N−1}, VN_0..VN_{|U|−1}.
+std::vector<tioa::Automaton> vlnodes_components(const VlConfig& config, Faults faults = {});
+tioa::Automaton vlnodes(const VlConfig& config, Faults faults = {});
 // RW ‖ VW ‖ VBcast.
-tioa::Automaton environment(const VlConfig& config, bool vsa_faults);
-tioa::Automaton vlayer(const VlConfig& config, bool vsa_faults);
+tioa::Automaton environment(const VlConfig& config, Faults faults = {});
+tioa::Automaton vlayer(const VlConfig& config, Faults faults = {});
 
 // One start state of VLayer[MC]: every variable at its declared initial value, no node
 // failed, robot p at locations[p] (RW's start leaves loc arbitrary). Enumerating the start

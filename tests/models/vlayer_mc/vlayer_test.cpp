@@ -16,13 +16,14 @@ TEST_CASE("vlayer VLayer[MC]: the components compose (Def 4.1)", "[vlayer]") {
   CHECK(nodes.layout().find("CN_0.cn.x"));
   CHECK(nodes.layout().find("CN_0.delay.held"));
   CHECK(nodes.layout().find("VN_1.M[0]"));
-  const auto layer = vlayer::vlayer(c, false);
+  const auto layer = vlayer::vlayer(c, {.robots = true, .vsas = false});
   CHECK(layer.layout().find("VBcast.reg[0]"));
   // Every input of a node is now driven by RW, VW or VBcast, except the robots' and the
   // VSAs' fail/restart (VW has no fault outputs here).
   for (const auto& action : layer.actions())
     if (action.kind == tioa::ActionKind::input)
       CHECK((action.name.rfind("fail_", 0) == 0 || action.name.rfind("restart_", 0) == 0));
-  const auto faulty = vlayer::vlayer(c, true); // VW drives fail_VN_u, restart_VN_u
+  const auto faulty =
+      vlayer::vlayer(c, {.robots = true, .vsas = true}); // VW drives fail_VN_u, restart_VN_u
   CHECK(faulty.actions()[*faulty.find_action("fail_VN_0")].kind == tioa::ActionKind::output);
 }

@@ -1,0 +1,93 @@
+#include "models/vlayer_mc/vlayer_model.hpp"
+
+#include "models/vlayer_mc/vlayer.hpp"
+#include "tioa/operators.hpp"
+
+namespace models {
+
+namespace {
+
+int whole(const ParamValues& p, const char* name) {
+  return static_cast<int>(p.at(name).integer());
+}
+
+} // namespace
+
+vlayer::VlConfig vlayer_config(const ParamValues& p) {
+  vlayer::VlConfig c;
+  c.rows = whole(p, "rows");
+  c.cols = whole(p, "cols");
+  c.nbh = whole(p, "nbh") == 4 ? mc::Neighbourhood::four : mc::Neighbourhood::eight;
+  c.robots = whole(p, "robots");
+  c.b = whole(p, "b");
+  c.delta = whole(p, "delta");
+  c.d = whole(p, "d");
+  c.e = whole(p, "e");
+  c.eps = whole(p, "eps");
+  c.eps_sample = whole(p, "eps_sample");
+  c.d_r = whole(p, "d_r");
+  c.vmax = whole(p, "vmax");
+  c.k = whole(p, "k");
+  c.rho1 = p.at("rho1").rational();
+  c.rho2 = p.at("rho2").rational();
+  return c;
+}
+
+ModelDefinition vlayer_mc_definition() {
+  ModelDefinition d;
+  d.name = "vlayer-mc";
+  d.description = "VLayer[MC]: RW, VW, VBcast, VBDelay, CN, VN composed as in seed 000 Def 4.1 "
+                  "and §5.5, on a rows x cols grid with a b x b lattice per region (time: quanta; "
+                  "models/vlayer_mc/README.md); robots start at the bottom-left corner, no node "
+                  "failed";
+  d.params = {
+      {"rows", 1, 1, 3, "rows of regions"},
+      {"cols", 2, 1, 3, "columns of regions"},
+      {"nbh", 4, 4, 8, "neighbourhood: 4 (seed 002) or 8 (seed 000 §4.1)"},
+      {"robots", 1, 1, 3, "number of robots (clients)"},
+      {"b", 2, 2, 8, "lattice units per region side (even)"},
+      {"delta", 6, 2, 64, "round length δ in quanta (seed 000 §5.5)"},
+      {"d", 1, 1, 16, "VBcast delay bound d"},
+      {"e", 0, 0, 16, "VBDelay bound e of the clients"},
+      {"eps", 0, 0, 16, "the slack ε of §5.4"},
+      {"eps_sample", 1, 1, 16, "largest gap between GPSupdates and between time updates"},
+      {"d_r", 1, 0, 16, "VN start-up time d_r"},
+      {"vmax", 4, 1, 16, "largest speed, lattice units per quantum in each coordinate"},
+      {"k", 1, 1, 3, "safe number of robots per region"},
+      {"rho1", ParamValue(mc::Rational(1, 2)), 0, 1, "damping of calctarget", ParamKind::rational,
+       true, true},
+      {"rho2", ParamValue(mc::Rational(9, 10)), 0, 1, "damping of assign", ParamKind::rational,
+       true, true},
+      {"robot_faults", 0, 0, 1, "1: robots fail and restart at any time (Fail(VBDelay_p||CN_p))"},
+      {"vsa_faults", 0, 0, 1, "1: VW fails and restarts VSAs at any time"}};
+  d.properties = {{"no-timelock", "every reachable state has an action or a tick (reports the "
+                                  "state count)"}};
+  d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
+    if (p.at("nbh") != 4 && p.at("nbh") != 8)
+      return "nbh must be 4 or 8, not " + p.at("nbh").text();
+    return vlayer::invalid(vlayer_config(p));
+  };
+  d.build = [](const ParamValues& p) {
+    const vlayer::VlConfig c = vlayer_config(p);
+    const vlayer::Lattice lattice = c.lattice();
+    const vlayer::Faults faults{.robots = p.at("robot_faults") == 1,
+                                .vsas = p.at("vsa_faults") == 1};
+    const tioa::Automaton layer = vlayer::vlayer(c, faults);
+    std::vector<vlayer::Point> at;
+    for (int robot = 0; robot < c.robots; ++robot)
+      at.push_back(lattice.point(robot, lattice.height() - 1));
+    ModelInstance m{tioa::Start(layer, vlayer::placed_start(layer, at)), {}, "1 time unit"};
+    m.properties = {{"no-timelock",
+                     "every reachable state has an action or a tick",
+                     checker::PropertyKind::deadlock,
+                     {},
+                     "",
+                     {},
+                     ""}};
+    return m;
+  };
+  d.suite = {{{}, "no-timelock", checker::Verdict::holds}};
+  return d;
+}
+
+} // namespace models

@@ -1,0 +1,32 @@
+// The model `vlayer-mc`: parameters and the state count of the smallest instance. Not yet in
+// models::all_models(): tests/models/registry_test.cpp pins the list of known models, so
+// registering it needs that test updated with it.
+#include <catch2/catch.hpp>
+
+#include "checker/property.hpp"
+#include "models/registry.hpp"
+#include "models/vlayer_mc/vlayer_model.hpp"
+
+TEST_CASE("vlayer-mc: bad parameters are one-line usage errors", "[vlayer]") {
+  const models::ModelDefinition def = models::vlayer_mc_definition();
+  CHECK_THROWS_AS(models::resolve_params(def, {"nbh=5"}), models::UsageError);
+  CHECK_THROWS_AS(models::resolve_params(def, {"b=3"}), models::UsageError);
+  // The target phase e + 2d + 2ε = 2 must fall inside the round.
+  CHECK_THROWS_AS(models::resolve_params(def, {"delta=2"}), models::UsageError);
+  CHECK_THROWS_AS(models::resolve_params(def, {"rho2=1"}), models::UsageError);
+  const auto values = models::resolve_params(def, {"rows=2", "cols=2", "nbh=8", "robots=3"});
+  const vlayer::VlConfig c = models::vlayer_config(values);
+  CHECK(c.lattice().regions() == 4);
+  CHECK(c.nbh == mc::Neighbourhood::eight);
+}
+
+// 1×2 grid, b = 2, one robot from (0, 2), δ = 6, d = 1, e = ε = 0, ε_sample = 1, d_r = 1,
+// v_max = 4, k = 1, ρ1 = 1/2, ρ2 = 9/10, no robot or VSA failures.
+TEST_CASE("vlayer-mc: exact state count of the smallest instance", "[vlayer]") {
+  const models::ModelDefinition def = models::vlayer_mc_definition();
+  const models::ModelInstance m = def.build(models::resolve_params(def, {}));
+  const checker::PropertyResult r = checker::run_property(m.system, m.properties.at(0), {});
+  CHECK(r.verdict == checker::Verdict::holds);
+  CHECK(r.states == 217'100);
+  CHECK(r.edges == 1'378'516);
+}
