@@ -286,22 +286,7 @@ FixpointCheck search_fixpoint(const FixpointLemma& lemma, const FixpointSearchOp
                            std::to_string(no_fixpoint));
   if (!found.empty())
     r.figures.emplace_back("smallest counterexamples before shrinking", join(found, "; "));
-  for (const BoundTally& c : check.claims)
-    r.figures.emplace_back((c.claim.decides_verdict ? "claim " : "proof step ") + c.claim.id,
-                           c.summary());
-  for (const BoundTally& c : check.claims)
-    r.notes.push_back((c.claim.decides_verdict ? "claim " : "proof step ") + c.claim.id + ": " +
-                      c.claim.statement + " [" + c.claim.source + "]");
-  for (const BoundTally& c : check.claims) {
-    const std::optional<BoundWitness>& shown = c.smallest ? c.smallest : c.largest;
-    if (shown)
-      for (std::string& line : shown->lines())
-        r.notes.push_back(std::move(line));
-  }
-  if (check.counterexample) {
-    r.trace_role = "counterexample";
-    r.trace_kind = "round";
-  }
+  report_claims(check);
   return check;
 }
 

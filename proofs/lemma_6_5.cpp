@@ -276,6 +276,12 @@ FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& fa
                          list.merged.empty() ? "none" : join(list.merged, "; "));
   r.figures.emplace_back("instances checked", std::to_string(check.instances));
   r.figures.emplace_back("rounds run", std::to_string(check.rounds));
+  report_claims(check);
+  return check;
+}
+
+void report_claims(FixpointCheck& check) {
+  checker::PropertyResult& r = check.result;
   for (const BoundTally& c : check.claims)
     r.figures.emplace_back((c.claim.decides_verdict ? "claim " : "proof step ") + c.claim.id,
                            c.summary());
@@ -292,7 +298,6 @@ FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& fa
     r.trace_role = "counterexample";
     r.trace_kind = "round";
   }
-  return check;
 }
 
 // ---- Lemma 6.5

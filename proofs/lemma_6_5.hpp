@@ -137,6 +137,11 @@ mc::Rational rho3(const mc::RoundSystem& system);
 FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& family,
                                     const CheckOptions& options = {});
 
+// Adds to check.result what every fixed-point check reports: per claim its summary (a
+// figure), its statement with its source and its smallest counterexample or largest value
+// round by round (notes), and the trace role when there is a counterexample.
+void report_claims(FixpointCheck& check);
+
 // ---- Lemma 6.5
 
 // Claims: "6.5" T_out ≤ 2m²(1+ρ3)m²n² + (1+ρ3)m²n² + m²n (the chain of Lemmas 6.2, 6.3,
