@@ -48,7 +48,7 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
   });
   a.input(names::vrcv_cn_update(u), {{"p", 0, n - 1}, {"l", 0, points - 1}})
       .eff([=](State& s, const Params& m) {
-        if (lattice.region_of(m[1]) == u)
+        if (!s.is_bottom(clock) && lattice.region_of(m[1]) == u) // D16: no clock, no round
           s[M[m[0]]] = m[1];
       });
   a.input(names::vrcv_vn_update(u), {{"g", 0, regions - 1}, {"n", 0, n}})

@@ -10,7 +10,8 @@
 //   since    0/1 clock: 0 = a timed step happened at this instant (D3)
 //
 //   input  time(t)_u                     eff clock := t                          (§4.1)
-//   input  vrcv(⟨cn-update, p, l⟩)_u     eff if region(l) = u: M[p] := l         (Fig. 6 line 28)
+//   input  vrcv(⟨cn-update, p, l⟩)_u     eff if clock ≠ ⊥ ∧ region(l) = u: M[p] := l
+//                                                                    (Fig. 6 line 28, D16)
 //   input  vrcv(⟨vn-update, g, n⟩)_u     eff if g ∈ nbrs(u): V[g] := n           (Fig. 6 line 42)
 //   output vcast(⟨vn-update, u, n⟩)_u    pre clock = e + d + ε ∧ since ≥ 1 ∧ n = |M|
 //                                        eff since := 0                          (D1, lines

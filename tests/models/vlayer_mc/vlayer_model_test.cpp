@@ -27,6 +27,6 @@ TEST_CASE("vlayer-mc: exact state count of the smallest instance", "[vlayer]") {
   const models::ModelInstance m = def.build(models::resolve_params(def, {}));
   const checker::PropertyResult r = checker::run_property(m.system, m.properties.at(0), {});
   CHECK(r.verdict == checker::Verdict::holds);
-  CHECK(r.states == 217'100);
-  CHECK(r.edges == 1'378'516);
+  CHECK(r.states == 205'980);
+  CHECK(r.edges == 1'309'564);
 }

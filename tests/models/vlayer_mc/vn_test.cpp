@@ -48,7 +48,8 @@ TEST_CASE("vlayer VN: collect, vn-update at e+d+eps, targets at e+2d+2eps", "[vl
   const auto vn = vlayer::vn(c, 0);
   Words s = start(vn);
   CHECK_FALSE(get(vn, s, "clock"));
-  CHECK(has(steps(vn, s), "tick")); // nothing due without a clock
+  CHECK(has(steps(vn, s), "tick"));                  // nothing due without a clock
+  CHECK(after(vn, s, "vrcv_cn_update_0(0,5)") == s); // D16: no clock, no round to collect for
   s = after(vn, s, "time_0(0)");
   s = after(vn, s, "vrcv_cn_update_0(0,5)"); // (0, 1): region 0
   CHECK(get(vn, s, "M[0]") == 5);

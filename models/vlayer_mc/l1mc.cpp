@@ -1,0 +1,120 @@
+#include "models/vlayer_mc/l1mc.hpp"
+
+#include <optional>
+
+#include "models/vlayer_mc/names.hpp"
+
+namespace vlayer {
+
+namespace {
+
+// A variable of `layer` by name, if it has one (CN_p.failed exists only with robot faults).
+std::optional<tioa::Slot> find(const tioa::Automaton& layer, const std::string& name) {
+  const tioa::VariableInfo* info = layer.layout().find(name);
+  return info ? std::optional<tioa::Slot>(info->slot()) : std::nullopt;
+}
+
+tioa::Slot need(const tioa::Automaton& layer, const std::string& name) {
+  const auto slot = find(layer, name);
+  if (!slot)
+    throw tioa::ModelError("L1MC: " + layer.name() + " has no variable '" + name + "'");
+  return *slot;
+}
+
+// A slot's value, nullopt for ⊥.
+std::optional<int> read(const tioa::State& s, const tioa::Slot& slot) {
+  const std::uint64_t code = s.code(slot);
+  if (slot.has_bottom && code == slot.value_codes)
+    return std::nullopt;
+  return static_cast<int>(static_cast<std::int64_t>(code) + slot.lo);
+}
+
+struct ClientSlots {
+  std::optional<tioa::Slot> failed;
+  tioa::Slot clock, x, target, v, vel, loc, reg;
+};
+
+struct VsaSlots {
+  std::optional<tioa::Slot> failed;
+  tioa::Slot clock;
+  std::vector<tioa::Slot> M;
+};
+
+} // namespace
+
+ClauseCheck l1mc_clauses(const VlConfig& c, const tioa::Automaton& layer, MWindow window) {
+  const Lattice lattice = c.lattice();
+  std::vector<ClientSlots> clients;
+  for (int p = 0; p < c.robots; ++p) {
+    const std::string cn = names::cn_name(p) + ".", id = "[" + std::to_string(p) + "]";
+    clients.push_back({find(layer, cn + "failed"), need(layer, cn + "cn.clock"),
+                       need(layer, cn + "cn.x"), need(layer, cn + "cn.target"),
+                       need(layer, cn + "cn.v"), need(layer, "RW.vel" + id),
+                       need(layer, "RW.loc" + id), need(layer, "VBcast.reg" + id)});
+  }
+  std::vector<VsaSlots> vsas;
+  for (int u = 0; u < lattice.regions(); ++u) {
+    const std::string vn = names::vn_name(u) + ".";
+    VsaSlots slots{find(layer, vn + "failed"), need(layer, vn + "clock"), {}};
+    for (int p = 0; p < c.robots; ++p)
+      slots.M.push_back(need(layer, vn + "M[" + std::to_string(p) + "]"));
+    vsas.push_back(slots);
+  }
+  const tioa::Slot now = need(layer, "RW.now");
+  const int delta = c.delta, target_phase = c.target_phase();
+  const int window_end = c.delta - c.d_r + c.eps_sample; // (4c), exclusive, may pass δ
+  const int vmax = c.vmax, d_r = c.d_r;
+  const int first_phase = window == MWindow::closed ? 0 : 1;
+
+  return [=](const tioa::State& s) {
+    std::vector<std::string> broken;
+    const int time = *read(s, now);
+    for (std::size_t u = 0; u < vsas.size(); ++u) {
+      const VsaSlots& vn = vsas[u];
+      if (vn.failed && s.code(*vn.failed) != 0)
+        continue;
+      const auto clock = read(s, vn.clock);
+      bool heard = false;
+      for (const auto& m : vn.M)
+        heard |= read(s, m).has_value();
+      const bool clock_ok = !clock || *clock == time;
+      const bool m_ok = !heard || (clock && *clock >= first_phase && *clock <= target_phase);
+      if (!clock_ok || !m_ok)
+        broken.push_back("(2) " + names::vn_name(static_cast<int>(u)));
+    }
+    for (std::size_t p = 0; p < clients.size(); ++p) {
+      const ClientSlots& cn = clients[p];
+      const std::string who = " " + names::cn_name(static_cast<int>(p));
+      if (cn.failed && s.code(*cn.failed) != 0)
+        continue;
+      const auto v = read(s, cn.v), vel = read(s, cn.vel);
+      if (v && v != vel)
+        broken.push_back("(3)" + who);
+      const auto x = read(s, cn.x);
+      if (!x)
+        continue;
+      const auto clock = read(s, cn.clock);
+      if (*x != *read(s, cn.loc) || clock != time)
+        broken.push_back("(4a)" + who);
+      const auto target = read(s, cn.target);
+      if (target && *target != *x) {
+        const int left = !clock || *clock == 0 ? 0 : delta - *clock; // δ⌈c/δ⌉ − c
+        if (!(lattice.distance(*target, *x) < vmax * (left - d_r)))
+          broken.push_back("(4b)" + who);
+      }
+      const auto reg = read(s, cn.reg);
+      const bool in_window =
+          clock && ((*clock > target_phase && *clock < window_end) || *clock + delta < window_end);
+      if (!(reg && *reg == lattice.region_of(*x)) && !in_window)
+        broken.push_back("(4c)" + who);
+    }
+    return broken;
+  };
+}
+
+tioa::StatePredicate l1mc(const VlConfig& config, const tioa::Automaton& layer, MWindow window) {
+  const ClauseCheck clauses = l1mc_clauses(config, layer, window);
+  return [clauses](const tioa::State& s) { return clauses(s).empty(); };
+}
+
+} // namespace vlayer
