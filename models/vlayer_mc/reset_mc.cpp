@@ -1,0 +1,113 @@
+#include "models/vlayer_mc/reset_mc.hpp"
+
+#include "models/vlayer_mc/names.hpp"
+#include "models/vlayer_mc/rw.hpp"
+
+namespace vlayer {
+
+namespace {
+
+std::optional<tioa::Slot> find(const tioa::Automaton& layer, const std::string& name) {
+  const tioa::VariableInfo* info = layer.layout().find(name);
+  return info ? std::optional<tioa::Slot>(info->slot()) : std::nullopt;
+}
+
+tioa::Slot need(const tioa::Automaton& layer, const std::string& name) {
+  const auto slot = find(layer, name);
+  if (!slot)
+    throw tioa::ModelError("ResetMC: " + layer.name() + " has no variable '" + name + "'");
+  return *slot;
+}
+
+bool is_bottom(const tioa::State& s, const tioa::Slot& slot) {
+  return slot.has_bottom && s.code(slot) == slot.value_codes;
+}
+
+std::int64_t value(const tioa::State& s, const tioa::Slot& slot) {
+  return static_cast<std::int64_t>(s.code(slot)) + slot.lo;
+}
+
+struct Node {
+  std::string name;
+  std::optional<tioa::Slot> failed;
+  std::vector<tioa::Slot> empty; // must be false / ⊥ (to_send)
+  std::optional<tioa::Slot> x, target, v;
+};
+
+} // namespace
+
+ClauseCheck reset_mc_clauses(const VlConfig& c, const tioa::Automaton& layer, MWindow window) {
+  const Lattice lattice = c.lattice();
+  const ClauseCheck l1 = l1mc_clauses(c, layer, window);
+  std::vector<Node> clients, vsas;
+  std::vector<tioa::Slot> gps_age, pending;
+  for (int p = 0; p < c.robots; ++p) {
+    const std::string cn = names::cn_name(p), id = "[" + std::to_string(p) + "]";
+    clients.push_back({cn,
+                       find(layer, cn + ".failed"),
+                       {need(layer, cn + ".delay.held")},
+                       need(layer, cn + ".cn.x"),
+                       need(layer, cn + ".cn.target"),
+                       need(layer, cn + ".cn.v")});
+    gps_age.push_back(need(layer, "RW.gps_age" + id));
+    pending.push_back(need(layer, "VBcast.cn_pending" + id));
+  }
+  for (int u = 0; u < lattice.regions(); ++u) {
+    const std::string vn = names::vn_name(u);
+    Node node{vn, find(layer, vn + ".failed"), {}, {}, {}, {}};
+    for (int p = 0; p < c.robots; ++p)
+      node.empty.push_back(need(layer, vn + ".out[" + std::to_string(p) + "]"));
+    vsas.push_back(node);
+    pending.push_back(need(layer, "VBcast.vn_mask[" + std::to_string(u) + "]"));
+    for (int p = 0; p < c.robots; ++p)
+      pending.push_back(need(layer, "VBcast.tu_pending[" + std::to_string(u * c.robots + p) + "]"));
+  }
+  const tioa::Slot now = need(layer, "RW.now");
+
+  return [=](const tioa::State& s) {
+    std::vector<std::string> broken;
+    for (const std::string& clause : l1(s))
+      broken.push_back("(1) " + clause);
+    const auto sending = [&](const tioa::Slot& slot) {
+      return slot.has_bottom ? !is_bottom(s, slot) : s.code(slot) != 0;
+    };
+    for (const Node& cn : clients) {
+      if (cn.failed && s.code(*cn.failed) != 0)
+        continue;
+      bool ok = !sending(cn.empty.front());
+      if (!is_bottom(s, *cn.x))
+        ok = ok && !is_bottom(s, *cn.target) && !is_bottom(s, *cn.v) &&
+             value(s, *cn.v) == zero_velocity;
+      if (!ok)
+        broken.push_back("(2) " + cn.name);
+    }
+    for (const Node& vn : vsas) {
+      if (vn.failed && s.code(*vn.failed) != 0)
+        continue;
+      for (const auto& slot : vn.empty)
+        if (sending(slot)) {
+          broken.push_back("(3) " + vn.name);
+          break;
+        }
+    }
+    for (const auto& slot : pending)
+      if (s.code(slot) != 0) {
+        broken.push_back("(4)");
+        break;
+      }
+    bool fresh = value(s, now) == 0;
+    for (const auto& age : gps_age)
+      fresh = fresh && value(s, age) >= 1;
+    if (!fresh)
+      broken.push_back("(5)");
+    return broken;
+  };
+}
+
+tioa::StatePredicate reset_mc(const VlConfig& config, const tioa::Automaton& layer,
+                              MWindow window) {
+  const ClauseCheck clauses = reset_mc_clauses(config, layer, window);
+  return [clauses](const tioa::State& s) { return clauses(s).empty(); };
+}
+
+} // namespace vlayer

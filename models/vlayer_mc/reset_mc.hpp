@@ -1,0 +1,26 @@
+#pragma once
+// The reset states ResetMC of seed 000 Definition 7.2 (lines 1233–1247) as a predicate on
+// states of VLayer[MC], clause by clause:
+//
+//   (1) x ∈ L1MC
+//   (2) ∀p ¬failed_p ⇒ [to_send_p^− = to_send_p^+ = λ ∧ (x_p = ⊥ ∨ (x*_p ≠ ⊥ ∧ v_p = 0))]
+//   (3) ∀u ¬failed_u ⇒ to_send_u = λ
+//   (4) ∀⟨m, u, t, P′⟩ ∈ vbcastq: P′ = ∅
+//   (5) RW.now mod δ = 0 ∧ ∀p ∀⟨l, t⟩ ∈ RW.updates(p): t < RW.now
+//
+// Readings (models/vlayer_mc/README.md, "Variables of Definitions 7.1 and 7.2"): to_send_p^±
+// is VBDelay_p's slot (`delay.held`); to_send_u is VN_u's send buffer `out` (D7: its
+// VBDelay is the identity); P′ = ∅ is "no pending bit in any VBcast slot"; (5)'s updates
+// condition is gps_age[p] ≥ 1. (1) uses the L1MC window the caller picks (finding F1).
+
+#include "models/vlayer_mc/l1mc.hpp"
+
+namespace vlayer {
+
+// The clauses (1)–(5) a state breaks ("(1) (2) VN_0" for an L1MC clause), empty in ResetMC.
+ClauseCheck reset_mc_clauses(const VlConfig& config, const tioa::Automaton& layer,
+                             MWindow window = MWindow::as_printed);
+tioa::StatePredicate reset_mc(const VlConfig& config, const tioa::Automaton& layer,
+                              MWindow window = MWindow::as_printed);
+
+} // namespace vlayer
