@@ -227,7 +227,8 @@ Outcome run_one(const mc::PositionSystem& system, const std::vector<mc::Robot>& 
   std::vector<std::vector<mc::Robot>> states{start};
   std::vector<mc::PositionRound> rounds;
   std::optional<std::size_t> fixed_from;
-  std::optional<std::size_t> period_start; // the run repeats state period_start from the end
+  std::optional<std::size_t> period_start; // a later state repeats the state of this round
+  bool changes_in_cycle = false;           // some robot changes VN within the repetition
   while (rounds.size() < family.max_rounds) {
     const std::size_t t = rounds.size();
     if (fixed_from && t >= *fixed_from + 2 + family.spacing_rounds + 1)
@@ -236,11 +237,18 @@ Outcome run_one(const mc::PositionSystem& system, const std::vector<mc::Robot>& 
     states.push_back(mc::PositionSystem::after(rounds.back()));
     if (!fixed_from && system.certifies_fixed(rounds.back()))
       fixed_from = t;
-    if (!fixed_from) {
+    if (!fixed_from && !period_start) {
       const auto earlier = std::find(states.begin(), states.end() - 1, states.back());
       if (earlier != states.end() - 1) {
         period_start = static_cast<std::size_t>(earlier - states.begin());
-        break;
+        for (std::size_t r = *period_start; r < rounds.size(); ++r)
+          changes_in_cycle =
+              changes_in_cycle || !rounds[r].flow.empty() || !rounds[r].migrations.empty();
+        if (changes_in_cycle)
+          break;
+        // The same VNs for ever: fixed from the start of the cycle; run on for the spacing
+        // claims (the states keep cycling).
+        fixed_from = period_start;
       }
     }
   }
@@ -249,20 +257,14 @@ Outcome run_one(const mc::PositionSystem& system, const std::vector<mc::Robot>& 
     outcome.lines.push_back(mc::format_round(rounds[t]));
 
   Outcome::Verdict& fix = outcome.claims[fixed].emplace();
-  bool changes_in_cycle = false;
-  if (period_start)
-    for (std::size_t t = *period_start; t < rounds.size(); ++t)
-      changes_in_cycle =
-          changes_in_cycle || !rounds[t].flow.empty() || !rounds[t].migrations.empty();
-  if (fixed_from) {
+  if (period_start && !changes_in_cycle) {
+    fix.why = "periodic from round " + std::to_string(*period_start) + " with no robot changing VN";
+  } else if (fixed_from) {
     fix.why = "fixed from round " + std::to_string(*fixed_from) + " (certified)";
-  } else if (period_start && changes_in_cycle) {
+  } else if (period_start) {
     fix.violated = true;
     fix.why = "the state of round " + std::to_string(*period_start) + " recurs at round " +
               std::to_string(rounds.size()) + " and robots change VN in between: never fixed";
-  } else if (period_start) {
-    fix.why = "periodic from round " + std::to_string(*period_start) + " with no robot changing VN";
-    fixed_from = period_start;
   } else if (never_fixed_by_counts(system, states.back())) {
     fix.violated = true;
     fix.why = "after " + std::to_string(rounds.size()) +
