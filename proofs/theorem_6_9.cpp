@@ -336,6 +336,34 @@ bool fewer(const PositionalWitness& a, const PositionalWitness& b) {
   return a.robots != b.robots ? a.robots < b.robots : a.m < b.m;
 }
 
+// Adds one run's outcome to the tallies of its reading.
+void record(Tallies& tallies, std::size_t reading, const PositionSetting& setting,
+            std::size_t setting_index, const std::vector<mc::Robot>& robots,
+            const Outcome& outcome) {
+  ++tallies.runs;
+  tallies.rounds += outcome.rounds;
+  for (int kind = 0; kind < kinds; ++kind) {
+    const auto& verdict = outcome.claims[kind];
+    if (!verdict)
+      continue;
+    PositionalTally& tally = tallies.claims[reading * kinds + kind];
+    PositionalWitness w{tally.claim,  setting.describe(), robots.size(), setting.m,
+                        verdict->why, outcome.lines,      setting_index, robots};
+    if (!verdict->decided) {
+      ++tally.undecided;
+      if (!tally.undecided_example || fewer(w, *tally.undecided_example))
+        tally.undecided_example = std::move(w);
+      continue;
+    }
+    ++tally.premise;
+    if (!verdict->violated)
+      continue;
+    ++tally.violations;
+    if (!tally.smallest || fewer(w, *tally.smallest))
+      tally.smallest = std::move(w);
+  }
+}
+
 } // namespace
 
 std::vector<NamedCurve> positional_curves(int m) {
@@ -379,9 +407,13 @@ std::string PositionalFamily::describe() const {
     r2.push_back(mc::to_string(x));
   for (auto x : memberships)
     mem.push_back(name(x));
+  const std::string robots =
+      samples > 0 ? "random search, seed " + std::to_string(seed) + ", " + std::to_string(samples) +
+                        " samples of 0.." + std::to_string(sample_max_count) +
+                        " robots per region at random points (denominator 8)"
+                  : "0.." + std::to_string(max_count) + " robots per region at fixed spots";
   return "m x m grids of side 1, m in {" + join(parts, "; ") + "}; neighbourhood {" + join(n) +
-         "} (m = 1: 4 only); 0.." + std::to_string(max_count) +
-         " robots per region at fixed spots; k in {" + join(k) + "}; rho1 in {" + join(r1) +
+         "} (m = 1: 4 only); " + robots + "; k in {" + join(k) + "}; rho1 in {" + join(r1) +
          "}; rho2 in {" + join(r2) + "}; sigma = " + mc::to_string(sigma) + "; membership {" +
          join(mem) + "}; up to " + std::to_string(max_rounds) + " rounds, spacing checked for " +
          std::to_string(spacing_rounds) + " rounds after T + 2; default order, lowest ids";
@@ -437,48 +469,62 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
         t.claims.push_back({claim_id(static_cast<ClaimKind>(kind), membership), 0, 0, 0, {}, {}});
     return t;
   };
-  std::vector<Tallies> per_setting(settings.size(), fresh());
+  // The random search: samples drawn in order before anything runs (the same for every
+  // thread count): a setting, 0..sample_max_count robots per region, each at a random point
+  // (col + a/8, row + c/8) of its region.
+  struct Sample {
+    std::size_t setting;
+    std::vector<mc::Robot> robots;
+  };
+  std::vector<Sample> samples;
+  SplitMix64 random(positions.seed);
+  for (std::uint64_t i = 0; i < positions.samples; ++i) {
+    Sample sample{static_cast<std::size_t>(random.below(settings.size())), {}};
+    const int m = settings[sample.setting].m;
+    mc::RobotId id = 0;
+    for (int u = 0; u < m * m; ++u) {
+      const auto robots = random.below(static_cast<std::uint64_t>(positions.sample_max_count) + 1);
+      for (std::uint64_t j = 0; j < robots; ++j) {
+        const Rational x = Rational(u % m) + Rational(static_cast<long>(random.below(8)), 8);
+        const Rational y = Rational(u / m) + Rational(static_cast<long>(random.below(8)), 8);
+        sample.robots.push_back({id++, {x, y}, std::nullopt});
+      }
+    }
+    samples.push_back(std::move(sample));
+  }
+  auto system_of = [&](const PositionSetting& setting) {
+    return mc::PositionSystem(mc::ExactCurve(setting.curve->curve,
+                                             mc::GridTiling(setting.m, setting.neighbourhood),
+                                             positions.sigma),
+                              {setting.k, setting.rho1, setting.rho2}, {setting.membership});
+  };
+  auto reading_of = [&](const PositionSetting& setting) {
+    return static_cast<std::size_t>(
+        std::find(positions.memberships.begin(), positions.memberships.end(), setting.membership) -
+        positions.memberships.begin());
+  };
+
+  const std::size_t jobs = positions.samples > 0 ? samples.size() : settings.size();
+  std::vector<Tallies> per_setting(jobs, fresh());
   std::atomic<std::size_t> next{0};
   auto work = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < settings.size();) {
+    for (std::size_t i; positions.samples > 0 && (i = next.fetch_add(1)) < jobs;) {
+      const PositionSetting& setting = settings[samples[i].setting];
+      const mc::PositionSystem system = system_of(setting);
+      const Outcome outcome = run_one(system, samples[i].robots, setting.m, positions);
+      record(per_setting[i], reading_of(setting), setting, samples[i].setting, samples[i].robots,
+             outcome);
+    }
+    for (std::size_t i; positions.samples == 0 && (i = next.fetch_add(1)) < jobs;) {
       const PositionSetting& setting = settings[i];
-      const mc::GridTiling grid(setting.m, setting.neighbourhood);
-      const mc::PositionSystem system(mc::ExactCurve(setting.curve->curve, grid, positions.sigma),
-                                      {setting.k, setting.rho1, setting.rho2},
-                                      {setting.membership});
-      const std::size_t reading =
-          static_cast<std::size_t>(std::find(positions.memberships.begin(),
-                                             positions.memberships.end(), setting.membership) -
-                                   positions.memberships.begin());
+      const mc::PositionSystem system = system_of(setting);
+      const std::size_t reading = reading_of(setting);
       Tallies& tallies = per_setting[i];
-      Counts counts(grid.size(), 0);
+      Counts counts(system.curve().size(), 0);
       while (true) {
         const std::vector<mc::Robot> robots = place(system.curve(), counts);
         const Outcome outcome = run_one(system, robots, setting.m, positions);
-        ++tallies.runs;
-        tallies.rounds += outcome.rounds;
-        for (int kind = 0; kind < kinds; ++kind) {
-          const auto& verdict = outcome.claims[kind];
-          if (!verdict)
-            continue;
-          PositionalTally& tally = tallies.claims[reading * kinds + kind];
-          if (!verdict->decided) {
-            ++tally.undecided;
-            PositionalWitness w{tally.claim, setting.describe(), robots.size(),
-                                setting.m,   verdict->why,       outcome.lines};
-            if (!tally.undecided_example || fewer(w, *tally.undecided_example))
-              tally.undecided_example = std::move(w);
-            continue;
-          }
-          ++tally.premise;
-          if (!verdict->violated)
-            continue;
-          ++tally.violations;
-          PositionalWitness w{tally.claim, setting.describe(), robots.size(),
-                              setting.m,   verdict->why,       outcome.lines};
-          if (!tally.smallest || fewer(w, *tally.smallest))
-            tally.smallest = std::move(w);
-        }
+        record(tallies, reading, setting, i, robots, outcome);
         // The next configuration: the last region changes fastest.
         std::size_t u = counts.size();
         while (u > 0 && counts[u - 1] == positions.max_count)
@@ -508,6 +554,36 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
         mine.undecided_example = std::move(theirs.undecided_example);
     }
   }
+  // Shrink the random search's smallest counterexamples: drop robots while the claim fails.
+  if (positions.samples > 0)
+    for (PositionalTally& tally : all.claims) {
+      if (!tally.smallest)
+        continue;
+      const PositionSetting& setting = settings[tally.smallest->setting_index];
+      const mc::PositionSystem system = system_of(setting);
+      const auto kind = static_cast<std::size_t>(
+          std::find_if(kind_names, kind_names + kinds,
+                       [&](const char* k) { return tally.claim.find(k) != std::string::npos; }) -
+          kind_names);
+      std::vector<mc::Robot> robots = tally.smallest->start;
+      for (bool dropped = true; dropped;) {
+        dropped = false;
+        for (std::size_t i = 0; i < robots.size() && !dropped; ++i) {
+          std::vector<mc::Robot> fewer = robots;
+          fewer.erase(fewer.begin() + static_cast<std::ptrdiff_t>(i));
+          const Outcome outcome = run_one(system, fewer, setting.m, positions);
+          const auto& verdict = outcome.claims[kind];
+          if (verdict && verdict->decided && verdict->violated) {
+            robots = std::move(fewer);
+            tally.smallest->robots = robots.size();
+            tally.smallest->start = robots;
+            tally.smallest->why = verdict->why + " (shrunk)";
+            tally.smallest->lines = outcome.lines;
+            dropped = true;
+          }
+        }
+      }
+    }
   check.claims = std::move(all.claims);
   check.runs = all.runs;
   check.rounds = all.rounds;
@@ -541,6 +617,10 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
   } else if (!undecided.empty()) {
     r.verdict = checker::Verdict::incomplete;
     r.message = "incomplete: undecided within the round limit: " + join(undecided) + "; " + scope;
+  } else if (positions.samples > 0) {
+    r.verdict = checker::Verdict::incomplete;
+    r.message = "holds on " + std::to_string(positions.samples) +
+                " samples (a random search, not a proof); " + scope;
   } else {
     r.verdict = checker::Verdict::holds;
     r.message = "holds: every claim on every run; " + scope;

@@ -29,6 +29,8 @@
 //     that assign and any migrations can reach lets a round certify: never fixed; see
 //     never_certifiable in the .cpp); failing that, undecided, and the verdict is at best
 //     incomplete.
+// The random search (samples > 0) shrinks the smallest counterexample of each claim by
+// removing robots one at a time while the claim still fails.
 //   - "proportional": at the fixed assignment, max |y_u/q_u − y_v/q_v| over In ≤ the bound.
 //   - "on curve": at round T + 2 (T the certified round) every robot of a region on the
 //     curve lies on the closure of Γ_u.
@@ -72,6 +74,12 @@ struct PositionalFamily {
   mc::Rational sigma{1, 4};
   std::size_t max_rounds = 40;    // to decide "fixed"
   std::size_t spacing_rounds = 5; // rounds of the spacing claim after T + 2
+  // samples > 0: a seeded random search instead of every configuration — each sample a
+  // setting of the family and 0..sample_max_count robots per region at random points
+  // (col + a/8, row + c/8); its verdict is at best incomplete, "holds on N samples".
+  std::uint64_t samples = 0;
+  std::uint64_t seed = 1;
+  RobotCount sample_max_count = 12;
 
   std::string describe() const;
 };
@@ -84,6 +92,8 @@ struct PositionalWitness {
   int m = 0;
   std::string why;                // one line
   std::vector<std::string> lines; // the rounds of the run (up to 8)
+  std::size_t setting_index = 0;  // in the family's enumeration order
+  std::vector<mc::Robot> start;   // the robots at round 0
 };
 
 struct PositionalTally {

@@ -87,6 +87,8 @@ LemmaScope lemma_scope(const ParamValues& p) {
   }
   proofs::PositionalFamily& pf = scope.positions;
   pf.neighbourhoods = {nbh};
+  pf.samples = scope.samples;
+  pf.seed = seed;
   if (given) {
     pf.sides = {m};
     pf.max_count = p.at("n").integer();
@@ -173,7 +175,8 @@ const std::vector<LemmaProperty>& lemma_properties() {
        "seed 000 Theorem 6.9 (conference Theorem 1): part (1) at count level over the fixed-point "
        "family, both parts with robots' positions (exact curves, grids up to min(m, 2); given: m) "
        "under both "
-       "membership readings; samples is not used",
+       "membership readings; samples > 0: a seeded random search of up to 12 robots per region at "
+       "random points instead of the fixed spots",
        [](const LemmaScope& scope, unsigned threads) {
          return proofs::check_theorem_6_9(scope.fixpoint, scope.positions, {.threads = threads})
              .result;

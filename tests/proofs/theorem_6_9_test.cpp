@@ -109,3 +109,28 @@ TEST_CASE("theorem 6.9: a run whose positions never recur is proven never fixed"
   CHECK(system.run(two, 6).fixed_from);
   CHECK_FALSE(never_fixed_by_counts(system, two));
 }
+
+TEST_CASE("theorem 6.9: the random search says 'holds on N samples' and shrinks what it finds",
+          "[proofs][theorem-6.9][search]") {
+  PositionalFamily f = tiny_positions();
+  f.samples = 40;
+  f.seed = 3;
+  f.sample_max_count = 6;
+  f.memberships = {mc::Membership::assigned};
+  const TheoremCheck holds = check_theorem_6_9(tiny_counts(), f);
+  CHECK(holds.result.verdict == checker::Verdict::incomplete);
+  CHECK_THAT(holds.result.message, Catch::StartsWith("holds on 40 samples (a random search"));
+  CHECK(holds.runs == 40);
+  // The same figures for every thread count.
+  const TheoremCheck two = check_theorem_6_9(tiny_counts(), f, {.threads = 2});
+  CHECK(two.rounds == holds.rounds);
+
+  f.memberships = {mc::Membership::position};
+  const TheoremCheck found = check_theorem_6_9(tiny_counts(), f);
+  CHECK(found.result.verdict == checker::Verdict::violated);
+  const PositionalTally& fixed = found.claim("6.9(1) fixed [position]");
+  REQUIRE(fixed.smallest);
+  CHECK_THAT(fixed.smallest->why, Catch::EndsWith("(shrunk)"));
+  CHECK(fixed.smallest->robots == fixed.smallest->start.size());
+  CHECK(fixed.smallest->robots <= 6);
+}
