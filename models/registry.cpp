@@ -7,6 +7,7 @@
 #include "models/mc/mc_round_model.hpp"
 #include "models/mc/rational.hpp"
 #include "models/token_ring/token_ring.hpp"
+#include "models/vlayer_mc/vlayer_model.hpp"
 
 namespace models {
 
@@ -54,7 +55,7 @@ std::string ParamSpec::range() const {
 
 const std::vector<ModelDefinition>& all_models() {
   static const std::vector<ModelDefinition> models{token_ring_definition(), fischer_definition(),
-                                                   mc_round_definition()};
+                                                   mc_round_definition(), vlayer_mc_definition()};
   return models;
 }
 

@@ -93,7 +93,7 @@ TEST_CASE("registry: find_model names the known models when it fails", "[models]
     models::find_model("fisher");
     FAIL("no UsageError");
   } catch (const UsageError& e) {
-    CHECK(std::string(e.what()) == "unknown model 'fisher' (known: token-ring, fischer, mc-round)");
+    CHECK(std::string(e.what()) == "unknown model 'fisher' (known: token-ring, fischer, mc-round, vlayer-mc)");
   }
 }
 
