@@ -1,5 +1,6 @@
 #include "models/vlayer_mc/vlayer_model.hpp"
 
+#include "models/vlayer_mc/legal_sets.hpp"
 #include "models/vlayer_mc/vlayer.hpp"
 #include "tioa/operators.hpp"
 
@@ -59,9 +60,18 @@ ModelDefinition vlayer_mc_definition() {
       {"rho2", ParamValue(mc::Rational(9, 10)), 0, 1, "damping of assign", ParamKind::rational,
        true, true},
       {"robot_faults", 0, 0, 1, "1: robots fail and restart at any time (Fail(VBDelay_p||CN_p))"},
-      {"vsa_faults", 0, 0, 1, "1: VW fails and restarts VSAs at any time"}};
-  d.properties = {{"no-timelock", "every reachable state has an action or a tick (reports the "
-                                  "state count)"}};
+      {"vsa_faults", 0, 0, 1, "1: VW fails and restarts VSAs at any time"},
+      models::ParamSpec::choice("window", "printed", {"printed", "closed"},
+                                "Def 7.1(2), M_u nonempty: 'printed' (0, e+2d+2eps], 'closed' "
+                                "[0, e+2d+2eps] (README, finding F1)")};
+  d.properties = {
+      {"no-timelock", "every reachable state has an action or a tick (reports the state count)"},
+      {"l1mc-closure", "L1MC (Def 7.1) is closed under steps and ticks, from every L1MC state "
+                       "the instance reaches"},
+      {"reset-in-l1mc", "ResetMC (Def 7.2) is inside L1MC: clauses (2)-(5) imply (1) on the "
+                        "reachable states and on ResetMC states built directly"},
+      {"lmc-closure", "LMC (the states reachable from ResetMC) is closed, lies inside L1MC and "
+                      "never stops"}};
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     if (p.at("nbh") != 4 && p.at("nbh") != 8)
       return "nbh must be 4 or 8, not " + p.at("nbh").text();
@@ -76,17 +86,52 @@ ModelDefinition vlayer_mc_definition() {
     std::vector<vlayer::Point> at;
     for (int robot = 0; robot < c.robots; ++robot)
       at.push_back(lattice.point(robot, lattice.height() - 1));
+    const auto window =
+        p.at("window").text() == "closed" ? vlayer::MWindow::closed : vlayer::MWindow::as_printed;
     ModelInstance m{tioa::Start(layer, vlayer::placed_start(layer, at)), {}, "1 time unit"};
-    m.properties = {{"no-timelock",
-                     "every reachable state has an action or a tick",
-                     checker::PropertyKind::deadlock,
-                     {},
-                     "",
-                     {},
-                     ""}};
+    const tioa::Automaton system = m.system;
+    const auto custom = [](std::string name, std::string description,
+                           std::function<checker::PropertyResult(const checker::ExploreOptions&)>
+                               run) {
+      return checker::Property{
+          std::move(name), std::move(description), checker::PropertyKind::custom, {}, "", {}, "",
+          std::move(run)};
+    };
+    m.properties = {
+        custom("no-timelock", "every reachable state has an action or a tick",
+               [=](const checker::ExploreOptions& o) {
+                 checker::PropertyResult r = checker::check_no_deadlock(system, o);
+                 vlayer::note_round_length(c, r);
+                 return r;
+               }),
+        custom("l1mc-closure", "L1MC is closed under steps and ticks (seed 000 Def 7.1, §7.1)",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer::check_l1mc_closure(c, system, window, o);
+               }),
+        custom("reset-in-l1mc", "every ResetMC state is in L1MC (seed 000 Def 7.2)",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer::check_reset_in_l1mc(c, system, window, o);
+               }),
+        custom("lmc-closure", "LMC, the states reachable from ResetMC, is a legal set inside L1MC",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer::check_lmc_closure(c, layer, window, o);
+               })};
     return m;
   };
-  d.suite = {{{}, "no-timelock", checker::Verdict::holds}};
+  // Each well under a second (tests/models/vlayer_mc/legal_sets_test.cpp pins the counts).
+  d.suite = {{{}, "no-timelock", checker::Verdict::holds},
+             {{}, "l1mc-closure", checker::Verdict::violated}, // finding F1
+             {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
+              "l1mc-closure",
+              checker::Verdict::holds},
+             {{{"window", ParamValue::choice("closed")}, {"cols", 1}, {"delta", 4}},
+              "l1mc-closure",
+              checker::Verdict::violated}, // δ breaks the round-length rule
+             {{{"cols", 1}}, "reset-in-l1mc", checker::Verdict::holds},
+             {{}, "lmc-closure", checker::Verdict::violated}, // F1 from a ResetMC state
+             {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
+              "lmc-closure",
+              checker::Verdict::holds}};
   return d;
 }
 

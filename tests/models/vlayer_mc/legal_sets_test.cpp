@@ -1,0 +1,139 @@
+// The legal-set properties of `vlayer-mc` (models/vlayer_mc/legal_sets.hpp) on the smallest
+// instance: 1×2 grid, b = 2, one robot from (0, 2), δ = 6, d = 1, e = ε = 0, ε_sample = 1,
+// d_r = 1, v_max = 4, no failures. Verdicts and counts pinned; finding F1 (README) makes the
+// printed reading of Def 7.1(2) fail closure, the closed reading hold.
+#include <catch2/catch.hpp>
+
+#include "checker/property.hpp"
+#include "checker/trace.hpp"
+#include "models/registry.hpp"
+#include "models/vlayer_mc/lmc.hpp"
+#include "models/vlayer_mc/vlayer_model.hpp"
+
+namespace {
+
+checker::PropertyResult run(const std::string& property, std::vector<std::string> settings) {
+  const models::ModelDefinition def = models::vlayer_mc_definition();
+  const models::ModelInstance m = def.build(models::resolve_params(def, settings));
+  for (const auto& p : m.properties)
+    if (p.name == property)
+      return checker::run_property(m.system, p, {});
+  FAIL("no property " << property);
+  return {};
+}
+
+std::string figure(const checker::PropertyResult& r, const std::string& name) {
+  for (const auto& [key, value] : r.figures)
+    if (key == name)
+      return value;
+  return "";
+}
+
+bool has_note(const checker::PropertyResult& r, const std::string& start) {
+  for (const auto& note : r.notes)
+    if (note.rfind(start, 0) == 0)
+      return true;
+  return false;
+}
+
+} // namespace
+
+TEST_CASE("vlayer-mc l1mc-closure: as printed, the step of finding F1 leaves L1MC", "[vlayer]") {
+  const auto r = run("l1mc-closure", {});
+  CHECK(r.verdict == checker::Verdict::violated);
+  REQUIRE(r.trace);
+  CHECK(r.trace_kind == "closure-step");
+  CHECK(r.trace->steps.back().action == "vrcv_cn_update_0(0,10)");
+  CHECK(r.trace->steps.back().time == 0);
+  CHECK_THAT(r.message, Catch::Contains("(2) VN_0"));
+  CHECK_THAT(figure(r, "covered"), Catch::StartsWith("closure from the "));
+  CHECK_FALSE(has_note(r, "warning"));
+}
+
+TEST_CASE("vlayer-mc l1mc-closure: closed window, every reachable L1MC state", "[vlayer]") {
+  const auto r = run("l1mc-closure", {"window=closed"});
+  CHECK(r.verdict == checker::Verdict::holds);
+  CHECK(r.states == 205'980);
+  CHECK_THAT(figure(r, "covered"), Catch::Contains("(205980 states), not from all of L1MC"));
+}
+
+TEST_CASE("vlayer-mc reset-in-l1mc: reached and built ResetMC states", "[vlayer]") {
+  const auto r = run("reset-in-l1mc", {});
+  CHECK(r.verdict == checker::Verdict::holds);
+  CHECK(r.states == 205'980);
+  CHECK(figure(r, "reset states reached") == "3024");
+  CHECK(figure(r, "reset states built") == "120");
+  CHECK(figure(r, "(2)-(5) without (1)") == "0");
+  CHECK_FALSE(r.trace);
+}
+
+// δ = 3 breaks the round-length rule (bound 5): a target arrives at phase 0, where (4b)
+// allows none, so states meeting Def 7.2 (2)-(5) leave L1MC and clause (1) is what keeps
+// ResetMC inside it. The inclusion holds; the figure and the witness say so.
+TEST_CASE("vlayer-mc reset-in-l1mc: with delta = 3, clause (1) is needed", "[vlayer]") {
+  const auto r = run("reset-in-l1mc", {"window=closed", "delta=3"});
+  CHECK(r.verdict == checker::Verdict::holds);
+  CHECK(r.states == 260'172);
+  CHECK(figure(r, "reset states reached") == "3877");
+  CHECK(figure(r, "(2)-(5) without (1)") == "1593");
+  REQUIRE(r.trace);
+  CHECK(r.trace_role == "witness");
+  CHECK(has_note(r, "clause (1) is needed"));
+  CHECK(has_note(r, "warning: delta = 3 breaks the round-length rule"));
+}
+
+TEST_CASE("vlayer-mc lmc-closure: from ResetMC the step of F1 leaves L1MC", "[vlayer]") {
+  const auto r = run("lmc-closure", {});
+  CHECK(r.verdict == checker::Verdict::violated);
+  CHECK(r.states == 3528);
+  REQUIRE(r.trace);
+  CHECK(r.trace->length() == 3);
+  CHECK(r.trace->steps.back().action == "vrcv_cn_update_0(0,0)");
+  CHECK_THAT(r.message, Catch::Contains("(2) VN_0"));
+}
+
+// The 1×2 grid with the closed window holds too, on 2 003 560 states (5 s: README).
+TEST_CASE("vlayer-mc lmc-closure: closed window on the 1x1 grid", "[vlayer]") {
+  const auto r = run("lmc-closure", {"window=closed", "cols=1"});
+  CHECK(r.verdict == checker::Verdict::holds);
+  CHECK(r.states == 22'059);
+  CHECK_THAT(figure(r, "covered"), Catch::StartsWith("LMC from the 36 ResetMC states"));
+}
+
+// The round-length rule of §5.5: δ > 2e + 3d + 2ε + ⌈r/v_max⌉ + d_r = 0 + 3 + 0 + 1 + 1 = 5.
+// δ = 5 breaks it but the smallest instances have slack: the properties hold, with the
+// warning. At δ = 4 the targets computed at phase 2 arrive at phase 3, with too little of
+// the round left for (4b): the closure step shows it.
+TEST_CASE("vlayer-mc: a delta that breaks the round-length rule runs with a warning", "[vlayer]") {
+  const auto at5 = run("l1mc-closure", {"window=closed", "cols=1", "delta=5"});
+  CHECK(at5.verdict == checker::Verdict::holds);
+  CHECK(at5.states == 3130);
+  CHECK(has_note(at5, "warning: delta = 5 breaks the round-length rule"));
+
+  const auto at4 = run("l1mc-closure", {"window=closed", "delta=4"});
+  CHECK(at4.verdict == checker::Verdict::violated);
+  REQUIRE(at4.trace);
+  CHECK(at4.trace->length() == 22);
+  CHECK(at4.trace->steps.back().action == "vrcv_target_update_0(0,5)");
+  CHECK(at4.trace->steps.back().time == 3);
+  CHECK_THAT(at4.message, Catch::Contains("(4b) CN_0"));
+  CHECK(has_note(at4, "warning: delta = 4 breaks the round-length rule"));
+
+  const auto lmc4 = run("lmc-closure", {"window=closed", "cols=1", "delta=4"});
+  CHECK(lmc4.verdict == checker::Verdict::violated);
+  CHECK(lmc4.states == 3872);
+  CHECK_THAT(lmc4.message, Catch::Contains("(4b) CN_0"));
+
+  const auto timelock = run("no-timelock", {"delta=4"});
+  CHECK(has_note(timelock, "warning: delta = 4"));
+  const auto ok = run("no-timelock", {"cols=1"});
+  CHECK(ok.verdict == checker::Verdict::holds);
+  CHECK(ok.notes.empty());
+}
+
+TEST_CASE("vlayer-mc: the ResetMC family has (2 points)^robots 2^regions states", "[vlayer]") {
+  vlayer::VlConfig c;
+  CHECK(vlayer::reset_family_size(c) == 120);
+  c.robots = 2;
+  CHECK(vlayer::reset_family_size(c) == 3600);
+}
