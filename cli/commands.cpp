@@ -5,6 +5,7 @@
 #include "cli/exit_status.hpp"
 #include "cli/model_run.hpp"
 #include "cli/output.hpp"
+#include "cli/render_html.hpp"
 #include "cli/report_junit.hpp"
 #include "cli/report_text.hpp"
 #include "tioa/operators.hpp"
@@ -35,8 +36,10 @@ ModelRun start_run(const Built& built, const tioa::Automaton& system) {
   return run;
 }
 
-// Prints the report the settings ask for, writes the JUnit file, returns the exit code.
-int report(const ModelRun& run, const RunSettings& settings, std::optional<std::ofstream>& junit) {
+// Prints the report the settings ask for, writes the JUnit file and the HTML page, returns
+// the exit code.
+int report(const ModelRun& run, const RunSettings& settings, std::optional<std::ofstream>& junit,
+           std::optional<std::ofstream>& html) {
   if (settings.json)
     print_json(run_json(run, settings.trace != TraceMode::none));
   else
@@ -47,6 +50,12 @@ int report(const ModelRun& run, const RunSettings& settings, std::optional<std::
     if (!*junit)
       throw models::UsageError("cannot write the report file '" + settings.junit_path + "'");
   }
+  if (html) {
+    write_html(*html, run_json(run, true));
+    html->close();
+    if (!*html)
+      throw models::UsageError("cannot write the HTML file '" + settings.html_path + "'");
+  }
   return exit_status(run.results);
 }
 
@@ -56,11 +65,12 @@ int command_check(const ModelRequest& request, const RunSettings& settings) {
   const Built built = build(request);
   const auto properties = select_properties(built.instance, request.model, request.properties);
   auto junit = open_report_file(settings.junit_path);
+  auto html = open_report_file(settings.html_path);
   ModelRun run = start_run(built, built.instance.system);
   const checker::ExploreOptions options = explore_options(settings);
   for (const checker::Property* property : properties)
     run.results.push_back(checker::run_property(built.instance.system, *property, options));
-  return report(run, settings, junit);
+  return report(run, settings, junit, html);
 }
 
 int command_explore(const ModelRequest& request, const std::string& from,
@@ -91,13 +101,14 @@ int command_explore(const ModelRequest& request, const std::string& from,
   }
 
   auto junit = open_report_file(settings.junit_path);
+  auto html = open_report_file(settings.html_path);
   ModelRun run = start_run(built, system);
   run.from = from;
   const checker::ExploreOptions options = explore_options(settings);
   for (const checker::Property* property : properties)
     run.results.push_back(checker::run_property(system, *property, options));
   run.results.push_back(checker::run_property(system, no_deadlock, options));
-  return report(run, settings, junit);
+  return report(run, settings, junit, html);
 }
 
 } // namespace cli

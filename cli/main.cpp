@@ -98,10 +98,15 @@ void add_run_options(CLI::App* command, cli::RunSettings& settings, Limits& limi
                    "stop when the state store exceeds MiB mebibytes (0: no limit)")
       ->type_name("MiB")
       ->check(whole_number);
-  if (with_trace)
+  if (with_trace) {
     command->add_option("--trace", trace, "how to show traces: text, json or none")
         ->type_name("MODE")
         ->check(CLI::IsMember({"text", "json", "none"}));
+    command
+        ->add_option("--html", settings.html_path,
+                     "also write the traces as one self-contained HTML page to FILE")
+        ->type_name("FILE");
+  }
 }
 
 } // namespace

@@ -18,6 +18,7 @@ struct RunSettings {
   checker::Limits limits;
   bool json = false;
   std::string junit_path; // empty: no JUnit file
+  std::string html_path;  // empty: no HTML page of the traces (check, explore)
   TraceMode trace = TraceMode::text;
 };
 

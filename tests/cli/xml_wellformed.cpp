@@ -1,8 +1,9 @@
 // Exit 0 when the file is well-formed XML for the subset a JUnit report uses, else 1 with
-// the reason: an optional <?xml ...?> declaration, then one root element (it must be
-// <testsuites>); elements properly nested; attribute values in quotes without '<'; no
-// bare '<' or '&' in text; only the five predefined entities and numeric references;
-// no control characters other than tab, newline and carriage return.
+// the reason: an optional <?xml ...?> declaration, an optional <!DOCTYPE ...>, then one root
+// element (it must be <testsuites>, or the ROOT given: html for the --html pages); elements
+// properly nested; attribute values in quotes without '<'; no bare '<' or '&' in text; only the
+// five predefined entities and numeric references; no control characters other than tab, newline
+// and carriage return.
 
 #include <cctype>
 #include <fstream>
@@ -17,6 +18,7 @@ struct Parser {
   std::string text;
   std::size_t at = 0;
   std::string error;
+  std::string root = "testsuites";
 
   bool fail(const std::string& why) {
     if (error.empty())
@@ -87,6 +89,13 @@ struct Parser {
       at = end + 2;
     }
     skip_space();
+    if (text.compare(at, 9, "<!DOCTYPE") == 0) {
+      const std::size_t end = text.find('>', at);
+      if (end == std::string::npos)
+        return fail("unterminated DOCTYPE");
+      at = end + 1;
+      skip_space();
+    }
     std::vector<std::string> open;
     bool root_seen = false;
     while (!done()) {
@@ -109,8 +118,8 @@ struct Parser {
           if (open.empty()) {
             if (root_seen)
               return fail("a second root element <" + element + ">");
-            if (element != "testsuites")
-              return fail("the root is <" + element + ">, not <testsuites>");
+            if (element != root)
+              return fail("the root is <" + element + ">, not <" + root + ">");
             root_seen = true;
           }
           std::vector<std::string> attributes;
@@ -169,8 +178,8 @@ struct Parser {
 } // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::cerr << "usage: cli_xml_wellformed FILE\n";
+  if (argc != 2 && argc != 3) {
+    std::cerr << "usage: cli_xml_wellformed FILE [ROOT]\n";
     return 2;
   }
   std::ifstream file(argv[1], std::ios::binary);
@@ -182,6 +191,8 @@ int main(int argc, char** argv) {
   content << file.rdbuf();
   Parser parser;
   parser.text = content.str();
+  if (argc == 3)
+    parser.root = argv[2];
   if (!parser.document()) {
     std::cerr << "malformed XML: " << parser.error << '\n';
     return 1;

@@ -1,0 +1,83 @@
+# Tests of --html: each runs a command that writes one HTML page of a trace and checks it
+# with html_page.cmake: exit code, well-formed (XML with root <html>), no external
+# resource, the expected frames and text; the *_chromium tests also open the page in
+# headless Chromium and are reported as skipped where no chromium is installed.
+
+# A page of a real vlayer-mc trace, written through the CLI's report and renderer (the
+# model has no property with a trace yet).
+add_executable(cli_html_vlayer_page
+  html_vlayer_page.cpp
+  ${PROJECT_SOURCE_DIR}/cli/model_run.cpp
+  ${PROJECT_SOURCE_DIR}/cli/render_html.cpp
+  ${PROJECT_SOURCE_DIR}/cli/render_table.cpp
+  ${PROJECT_SOURCE_DIR}/cli/render_vlayer.cpp
+  ${PROJECT_SOURCE_DIR}/cli/report_json.cpp
+  ${PROJECT_SOURCE_DIR}/cli/time_note.cpp)
+target_include_directories(cli_html_vlayer_page PRIVATE ${PROJECT_SOURCE_DIR})
+target_link_libraries(cli_html_vlayer_page PRIVATE registry nlohmann_json::nlohmann_json fmt::fmt
+                                                   tioa_warnings)
+
+# html_test(NAME EXIT code PAGE file [FRAMES n] [CHROMIUM] COMMAND words... [PAGE_REGEX regex...])
+function(html_test name)
+  cmake_parse_arguments(T "CHROMIUM" "EXIT;PAGE;FRAMES" "COMMAND;PAGE_REGEX" ${ARGN})
+  list(JOIN T_COMMAND "|" command)
+  list(JOIN T_PAGE_REGEX "@@" regexes)
+  set(defines "-DCMD=${command}" "-DEXPECT_EXIT=${T_EXIT}" "-DPAGE=${T_PAGE}"
+      "-DXML_CHECKER=$<TARGET_FILE:cli_xml_wellformed>" "-DPAGE_REGEX=${regexes}")
+  if(DEFINED T_FRAMES)
+    list(APPEND defines "-DFRAMES=${T_FRAMES}")
+  endif()
+  if(T_CHROMIUM)
+    list(APPEND defines "-DCHROMIUM=ON")
+  endif()
+  add_test(NAME cli.${name} COMMAND ${CMAKE_COMMAND} ${defines}
+           -P ${CMAKE_CURRENT_SOURCE_DIR}/html_page.cmake)
+  set_tests_properties(cli.${name} PROPERTIES TIMEOUT 90 LABELS cli
+                       SKIP_REGULAR_EXPRESSION "SKIPPED: ")
+endfunction()
+
+set(html_out ${CMAKE_CURRENT_BINARY_DIR}/out/html)
+file(MAKE_DIRECTORY ${html_out})
+set(tioa_check $<TARGET_FILE:tioa-check>)
+
+# Dijkstra's ring with K = 3 < N = 5 does not stabilise: a lasso of 15 steps (16 frames),
+# the loop from step 0.
+foreach(variant IN ITEMS "" _chromium)
+  if(variant STREQUAL "")
+    set(chromium "")
+  else()
+    set(chromium CHROMIUM)
+  endif()
+  html_test(html_token_ring_lasso${variant} EXIT 1 PAGE ${html_out}/token_ring_lasso${variant}.html
+            FRAMES 16 ${chromium}
+            COMMAND ${tioa_check} check token-ring -p N=5,K=3 --prop convergence --threads 1
+                    --html ${html_out}/token_ring_lasso${variant}.html
+            PAGE_REGEX "<title>tioa-check: token-ring \\(N=5, K=3\\)</title>"
+                       "<b>convergence</b> \\(stabilisation\\): <span class=\"verdict-violated\">violated</span>"
+                       "counterexample \\(lasso\\), 15 steps, 16 frames"
+                       "step 0: start state, t = 0 <span class=\"loop-note\">\\(the loop starts here\\)"
+                       "step 1: after <code>step\\(0\\)</code>, t = 1"
+                       "step 15: after <code>step\\([0-9]\\)</code>, t = 15 <span class=\"loop-note\">\\(the same state as step 0"
+                       "<tr class=\"changed\"><td>x\\[0\\]</td><td>1 <span class=\"was\">\\(was 0\\)</span>")
+  html_test(html_vlayer${variant} EXIT 0 PAGE ${html_out}/vlayer${variant}.html ${chromium}
+            COMMAND $<TARGET_FILE:cli_html_vlayer_page> ${html_out}/vlayer${variant}.html
+            PAGE_REGEX "<title>tioa-check: vlayer-mc \\(rows=1, cols=2,"
+                       "<b>no-target-yet</b> \\(invariant\\): <span class=\"verdict-violated\">"
+                       "<svg [^>]*class=\"vlayer\"" "<rect class=\"region live\""
+                       "<line class=\"curve\"" "<circle class=\"robot\""
+                       "<line class=\"msg cn-update\"" "<line class=\"msg target-update\""
+                       "<path class=\"target\"" "cn-update ⟨0, \\([0-9],[0-9]\\)⟩ in VBcast"
+                       "target-update ⟨0, \\([0-9],[0-9]\\)⟩ from VSA [01] in VBcast")
+endforeach()
+
+# Every model has a page: the generic table for Fischer (an invariant counterexample), a
+# page that says so where no property has a trace, and a usage error for a path that
+# cannot be written (before any check runs).
+html_test(html_fischer EXIT 1 PAGE ${html_out}/fischer.html FRAMES 9
+          COMMAND ${tioa_check} check fischer -p N=2,A=2,B=1 --prop mutex --html ${html_out}/fischer.html
+          PAGE_REGEX "step 8: after <code>enter\\(2\\)</code>, t = 2"
+                     "<tr class=\"changed\"><td>loc\\[1\\]</td><td>CS")
+html_test(html_no_trace EXIT 0 PAGE ${html_out}/no_trace.html FRAMES 0
+          COMMAND ${tioa_check} explore fischer -p N=2 --from start --html ${html_out}/no_trace.html
+          PAGE_REGEX "No property has a trace to show" "start states: start")
+cli_usage_error(html_unwritable check token-ring --html /nonexistent/dir/page.html)
