@@ -189,6 +189,18 @@ void write_vlayer_picture(std::ostream& out, const Json& params, const Json& sta
 
   out << "<ul class=\"facts\">\n";
   out << "<li>RW.now = " << html_text(text(state, "RW.now")) << "</li>\n";
+  // Each VSA: its clock and the cn-updates it has collected in M (Def 7.1(2) reads both).
+  for (int u = 0; u < lattice.regions(); ++u) {
+    const std::string vn = "VN_" + std::to_string(u);
+    std::string collected;
+    for (int p = 0; p < robots; ++p)
+      if (const auto at = number(state, indexed(vn + ".M", p)))
+        collected +=
+            (collected.empty() ? "" : ", ") + std::to_string(p) + " at " + point_text(lattice, *at);
+    out << "<li class=\"vsa-facts\">VSA " << u << (flag(state, vn + ".failed") ? " (failed)" : "")
+        << ": clock " << html_text(text(state, vn + ".clock")) << ", M = {" << html_text(collected)
+        << "}</li>\n";
+  }
   for (int p = 0; p < robots; ++p) {
     const std::string cn = "CN_" + std::to_string(p);
     out << "<li>robot " << p << (flag(state, cn + ".failed") ? " (failed)" : "") << " at "

@@ -70,6 +70,26 @@ foreach(variant IN ITEMS "" _chromium)
                        "target-update ⟨0, \\([0-9],[0-9]\\)⟩ from VSA [01] in VBcast")
 endforeach()
 
+# vlayer-mc through the CLI: L1MC as printed is not closed (models/vlayer_mc/README.md, F1),
+# a counterexample of 5 steps at time 0 that ends with VSA 0 collecting a cn-update at phase 0.
+foreach(variant IN ITEMS "" _chromium)
+  if(variant STREQUAL "")
+    set(chromium "")
+  else()
+    set(chromium CHROMIUM)
+  endif()
+  html_test(html_vlayer_l1mc${variant} EXIT 1 PAGE ${html_out}/vlayer_l1mc${variant}.html
+            FRAMES 6 ${chromium}
+            COMMAND ${tioa_check} check vlayer-mc --prop l1mc-closure --threads 1 --trace none
+                    --html ${html_out}/vlayer_l1mc${variant}.html
+            PAGE_REGEX "<b>l1mc-closure</b> \\(legal-set\\): <span class=\"verdict-violated\">"
+                       "step 1: after <code>GPSupdate_0\\(10,0\\)</code>, t = 0"
+                       "<line class=\"msg cn-update\""
+                       "cn-update ⟨0, \\(0,2\\)⟩ in VBcast, age 0"
+                       "step 5: after <code>vrcv_cn_update_0\\(0,10\\)</code>, t = 0"
+                       "VSA 0: clock 0, M = {0 at \\(0,2\\)}</li>")
+endforeach()
+
 # Every model has a page: the generic table for Fischer (an invariant counterexample), a
 # page that says so where no property has a trace, and a usage error for a path that
 # cannot be written (before any check runs).
