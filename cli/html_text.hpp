@@ -5,33 +5,12 @@
 #include <string>
 #include <string_view>
 
+#include "checker/xml_escape.hpp"
+
 namespace cli {
 
 inline std::string html_text(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-    case '&':
-      out += "&amp;";
-      break;
-    case '<':
-      out += "&lt;";
-      break;
-    case '>':
-      out += "&gt;";
-      break;
-    case '"':
-      out += "&quot;";
-      break;
-    case '\'':
-      out += "&#39;";
-      break;
-    default:
-      out += c;
-    }
-  }
-  return out;
+  return checker::xml_escape(text);
 }
 
 } // namespace cli

@@ -1,5 +1,7 @@
 #include "cli/report_junit.hpp"
 
+#include "checker/xml_escape.hpp"
+
 #include <ostream>
 #include <sstream>
 
@@ -10,40 +12,7 @@
 namespace cli {
 
 std::string xml_escape(const std::string& text, bool attribute) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    switch (c) {
-    case '&':
-      out += "&amp;";
-      break;
-    case '<':
-      out += "&lt;";
-      break;
-    case '>':
-      out += "&gt;";
-      break;
-    case '"':
-      out += "&quot;";
-      break;
-    case '\'':
-      out += "&apos;";
-      break;
-    case '\n':
-      out += attribute ? "&#10;" : "\n";
-      break;
-    case '\t':
-      out += attribute ? "&#9;" : "\t";
-      break;
-    case '\r':
-      out += "&#13;";
-      break;
-    default:
-      out += (byte < 0x20 || byte == 0x7f) ? '?' : c; // not allowed in XML 1.0
-    }
-  }
-  return out;
+  return checker::xml_escape(text, attribute);
 }
 
 void write_junit(std::ostream& out, const std::vector<JunitSuite>& suites) {

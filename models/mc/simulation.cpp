@@ -1,5 +1,7 @@
 #include "models/mc/simulation.hpp"
 
+#include "checker/xml_escape.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -184,26 +186,7 @@ std::string simulation_csv(const std::vector<SimulationResult>& results) {
 namespace {
 
 std::string escape(std::string_view text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-    case '&':
-      out += "&amp;";
-      break;
-    case '<':
-      out += "&lt;";
-      break;
-    case '>':
-      out += "&gt;";
-      break;
-    case '"':
-      out += "&quot;";
-      break;
-    default:
-      out += c;
-    }
-  }
-  return out;
+  return checker::xml_escape(text);
 }
 
 // A round step for axis ticks: 1, 2 or 5 times a power of ten, about range/ticks.
