@@ -3,23 +3,11 @@
 #include <optional>
 
 #include "models/vlayer_mc/names.hpp"
+#include "models/vlayer_mc/slots.hpp"
 
 namespace vlayer {
 
 namespace {
-
-// A variable of `layer` by name, if it has one (CN_p.failed exists only with robot faults).
-std::optional<tioa::Slot> find(const tioa::Automaton& layer, const std::string& name) {
-  const tioa::VariableInfo* info = layer.layout().find(name);
-  return info ? std::optional<tioa::Slot>(info->slot()) : std::nullopt;
-}
-
-tioa::Slot need(const tioa::Automaton& layer, const std::string& name) {
-  const auto slot = find(layer, name);
-  if (!slot)
-    throw tioa::ModelError("L1MC: " + layer.name() + " has no variable '" + name + "'");
-  return *slot;
-}
 
 // A slot's value, nullopt for ⊥.
 std::optional<int> read(const tioa::State& s, const tioa::Slot& slot) {
@@ -47,20 +35,21 @@ ClauseCheck l1mc_clauses(const VlConfig& c, const tioa::Automaton& layer, MWindo
   std::vector<ClientSlots> clients;
   for (int p = 0; p < c.robots; ++p) {
     const std::string cn = names::cn_name(p) + ".", id = "[" + std::to_string(p) + "]";
-    clients.push_back({find(layer, cn + "failed"), need(layer, cn + "cn.clock"),
-                       need(layer, cn + "cn.x"), need(layer, cn + "cn.target"),
-                       need(layer, cn + "cn.v"), need(layer, "RW.vel" + id),
-                       need(layer, "RW.loc" + id), need(layer, "VBcast.reg" + id)});
+    clients.push_back(
+        {find_slot(layer, cn + "failed"), need_slot(layer, cn + "cn.clock", "L1MC"),
+         need_slot(layer, cn + "cn.x", "L1MC"), need_slot(layer, cn + "cn.target", "L1MC"),
+         need_slot(layer, cn + "cn.v", "L1MC"), need_slot(layer, "RW.vel" + id, "L1MC"),
+         need_slot(layer, "RW.loc" + id, "L1MC"), need_slot(layer, "VBcast.reg" + id, "L1MC")});
   }
   std::vector<VsaSlots> vsas;
   for (int u = 0; u < lattice.regions(); ++u) {
     const std::string vn = names::vn_name(u) + ".";
-    VsaSlots slots{find(layer, vn + "failed"), need(layer, vn + "clock"), {}};
+    VsaSlots slots{find_slot(layer, vn + "failed"), need_slot(layer, vn + "clock", "L1MC"), {}};
     for (int p = 0; p < c.robots; ++p)
-      slots.M.push_back(need(layer, vn + "M[" + std::to_string(p) + "]"));
+      slots.M.push_back(need_slot(layer, vn + "M[" + std::to_string(p) + "]", "L1MC"));
     vsas.push_back(slots);
   }
-  const tioa::Slot now = need(layer, "RW.now");
+  const tioa::Slot now = need_slot(layer, "RW.now", "L1MC");
   const int delta = c.delta, target_phase = c.target_phase();
   const int window_end = c.delta - c.d_r + c.eps_sample; // (4c), exclusive, may pass δ
   const int vmax = c.vmax, d_r = c.d_r;

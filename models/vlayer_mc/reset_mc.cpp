@@ -2,22 +2,11 @@
 
 #include "models/vlayer_mc/names.hpp"
 #include "models/vlayer_mc/rw.hpp"
+#include "models/vlayer_mc/slots.hpp"
 
 namespace vlayer {
 
 namespace {
-
-std::optional<tioa::Slot> find(const tioa::Automaton& layer, const std::string& name) {
-  const tioa::VariableInfo* info = layer.layout().find(name);
-  return info ? std::optional<tioa::Slot>(info->slot()) : std::nullopt;
-}
-
-tioa::Slot need(const tioa::Automaton& layer, const std::string& name) {
-  const auto slot = find(layer, name);
-  if (!slot)
-    throw tioa::ModelError("ResetMC: " + layer.name() + " has no variable '" + name + "'");
-  return *slot;
-}
 
 bool is_bottom(const tioa::State& s, const tioa::Slot& slot) {
   return slot.has_bottom && s.code(slot) == slot.value_codes;
@@ -44,25 +33,26 @@ ClauseCheck reset_mc_clauses(const VlConfig& c, const tioa::Automaton& layer, MW
   for (int p = 0; p < c.robots; ++p) {
     const std::string cn = names::cn_name(p), id = "[" + std::to_string(p) + "]";
     clients.push_back({cn,
-                       find(layer, cn + ".failed"),
-                       {need(layer, cn + ".delay.held")},
-                       need(layer, cn + ".cn.x"),
-                       need(layer, cn + ".cn.target"),
-                       need(layer, cn + ".cn.v")});
-    gps_age.push_back(need(layer, "RW.gps_age" + id));
-    pending.push_back(need(layer, "VBcast.cn_pending" + id));
+                       find_slot(layer, cn + ".failed"),
+                       {need_slot(layer, cn + ".delay.held", "ResetMC")},
+                       need_slot(layer, cn + ".cn.x", "ResetMC"),
+                       need_slot(layer, cn + ".cn.target", "ResetMC"),
+                       need_slot(layer, cn + ".cn.v", "ResetMC")});
+    gps_age.push_back(need_slot(layer, "RW.gps_age" + id, "ResetMC"));
+    pending.push_back(need_slot(layer, "VBcast.cn_pending" + id, "ResetMC"));
   }
   for (int u = 0; u < lattice.regions(); ++u) {
     const std::string vn = names::vn_name(u);
-    Node node{vn, find(layer, vn + ".failed"), {}, {}, {}, {}};
+    Node node{vn, find_slot(layer, vn + ".failed"), {}, {}, {}, {}};
     for (int p = 0; p < c.robots; ++p)
-      node.empty.push_back(need(layer, vn + ".out[" + std::to_string(p) + "]"));
+      node.empty.push_back(need_slot(layer, vn + ".out[" + std::to_string(p) + "]", "ResetMC"));
     vsas.push_back(node);
-    pending.push_back(need(layer, "VBcast.vn_mask[" + std::to_string(u) + "]"));
+    pending.push_back(need_slot(layer, "VBcast.vn_mask[" + std::to_string(u) + "]", "ResetMC"));
     for (int p = 0; p < c.robots; ++p)
-      pending.push_back(need(layer, "VBcast.tu_pending[" + std::to_string(u * c.robots + p) + "]"));
+      pending.push_back(need_slot(
+          layer, "VBcast.tu_pending[" + std::to_string(u * c.robots + p) + "]", "ResetMC"));
   }
-  const tioa::Slot now = need(layer, "RW.now");
+  const tioa::Slot now = need_slot(layer, "RW.now", "ResetMC");
 
   return [=](const tioa::State& s) {
     std::vector<std::string> broken;
