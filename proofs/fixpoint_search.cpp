@@ -230,29 +230,13 @@ FixpointCheck search_fixpoint(const FixpointLemma& lemma, const FixpointSearchOp
   check.claims = std::move(tallies);
   check.instances = samples.size();
   check.rounds = rounds;
-  std::vector<std::string> violated, steps;
-  for (const BoundTally& c : check.claims) {
-    if (!c.smallest)
-      continue;
-    if (!c.claim.decides_verdict) {
+  const std::vector<std::string> violated = start_result(
+      check, lemma, std::chrono::duration<double>(Clock::now() - began).count(), options.threads);
+  std::vector<std::string> steps;
+  for (const BoundTally& c : check.claims)
+    if (c.smallest && !c.claim.decides_verdict)
       steps.push_back(c.claim.id);
-      continue;
-    }
-    violated.push_back(c.claim.id);
-    if (!check.counterexample || smaller(*c.smallest, *check.counterexample))
-      check.counterexample = c.smallest;
-  }
-
   checker::PropertyResult& r = check.result;
-  r.name = lemma.name;
-  r.kind = "round-lemma";
-  r.description = lemma.description;
-  r.states = check.instances;
-  r.edges = check.rounds;
-  r.depth = 0;
-  r.seconds = std::chrono::duration<double>(Clock::now() - began).count();
-  r.threads = std::max(1u, options.threads);
-  r.time_unit = "rounds";
   const std::string scope = std::to_string(check.rounds) + " rounds to the fixed point";
   if (!violated.empty()) {
     r.verdict = checker::Verdict::violated;

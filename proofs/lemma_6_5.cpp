@@ -229,24 +229,9 @@ FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& fa
   check.skipped = all.skipped;
   check.rounds = all.rounds;
 
-  std::vector<std::string> violated;
-  for (const BoundTally& c : check.claims)
-    if (c.claim.decides_verdict && c.smallest) {
-      violated.push_back(c.claim.id);
-      if (!check.counterexample || smaller(*c.smallest, *check.counterexample))
-        check.counterexample = c.smallest;
-    }
-
+  const std::vector<std::string> violated = start_result(
+      check, lemma, std::chrono::duration<double>(Clock::now() - start).count(), options.threads);
   checker::PropertyResult& r = check.result;
-  r.name = lemma.name;
-  r.kind = "round-lemma";
-  r.description = lemma.description;
-  r.states = check.instances;
-  r.edges = check.rounds;
-  r.depth = 0;
-  r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  r.threads = std::max(1u, options.threads);
-  r.time_unit = "rounds";
   const std::string scope = std::to_string(check.instances) +
                             " runs to the fixed point (default "
                             "order), " +
@@ -278,6 +263,28 @@ FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& fa
   r.figures.emplace_back("rounds run", std::to_string(check.rounds));
   report_claims(check);
   return check;
+}
+
+std::vector<std::string> start_result(FixpointCheck& check, const FixpointLemma& lemma,
+                                      double seconds, unsigned threads) {
+  std::vector<std::string> violated;
+  for (const BoundTally& c : check.claims)
+    if (c.claim.decides_verdict && c.smallest) {
+      violated.push_back(c.claim.id);
+      if (!check.counterexample || smaller(*c.smallest, *check.counterexample))
+        check.counterexample = c.smallest;
+    }
+  checker::PropertyResult& r = check.result;
+  r.name = lemma.name;
+  r.kind = "round-lemma";
+  r.description = lemma.description;
+  r.states = check.instances;
+  r.edges = check.rounds;
+  r.depth = 0;
+  r.seconds = seconds;
+  r.threads = std::max(1u, threads);
+  r.time_unit = "rounds";
+  return violated;
 }
 
 void report_claims(FixpointCheck& check) {

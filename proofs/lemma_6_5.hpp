@@ -137,6 +137,12 @@ mc::Rational rho3(const mc::RoundSystem& system);
 FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& family,
                                     const CheckOptions& options = {});
 
+// Sets check.counterexample (the smallest over the claims that decide the verdict) and the
+// head of check.result (name, kind, description, instances as states, rounds as edges,
+// seconds, threads); returns the ids of the violated claims that decide the verdict.
+std::vector<std::string> start_result(FixpointCheck& check, const FixpointLemma& lemma,
+                                      double seconds, unsigned threads);
+
 // Adds to check.result what every fixed-point check reports: per claim its summary (a
 // figure), its statement with its source and its smallest counterexample or largest value
 // round by round (notes), and the trace role when there is a counterexample.
