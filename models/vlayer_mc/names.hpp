@@ -46,6 +46,12 @@ inline std::string restart_vn(int u) {
 inline std::string cn_name(int p) {
   return indexed("CN", p);
 }
+inline std::string fail_cn(int p) {
+  return "fail_" + cn_name(p);
+}
+inline std::string restart_cn(int p) {
+  return "restart_" + cn_name(p);
+}
 // VN_u → VBcast (its VBDelay is the identity, D7): vn-update ⟨u, n⟩ and target-update ⟨p, x*⟩.
 inline std::string vcast_vn_update(int u) {
   return indexed("vcast_vn_update", u);

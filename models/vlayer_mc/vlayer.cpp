@@ -12,12 +12,12 @@
 
 namespace vlayer {
 
-std::vector<tioa::Automaton> vlnodes_components(const VlConfig& c, Faults faults) {
+std::vector<tioa::Automaton> vlnodes_components(const VlConfig& c) {
   std::vector<tioa::Automaton> nodes;
   for (int p = 0; p < c.robots; ++p) {
     const std::string name = names::cn_name(p);
     tioa::Automaton node = tioa::compose(name, {vbdelay(c, p), cn(c, p)});
-    nodes.push_back(faults.robots ? tioa::Fail(node, {"fail_" + name, "restart_" + name}) : node);
+    nodes.push_back(tioa::Fail(node, {names::fail_cn(p), names::restart_cn(p)}));
   }
   for (RegionId u = 0; u < c.lattice().regions(); ++u) {
     tioa::Automaton node = vn(c, u);
@@ -27,19 +27,29 @@ std::vector<tioa::Automaton> vlnodes_components(const VlConfig& c, Faults faults
   return nodes;
 }
 
-tioa::Automaton vlnodes(const VlConfig& c, Faults faults) {
-  return tioa::compose("VLNodes", vlnodes_components(c, faults));
+tioa::Automaton vlnodes(const VlConfig& c) {
+  return tioa::compose("VLNodes", vlnodes_components(c));
+}
+
+tioa::Automaton client_faults(const VlConfig& c, bool robot_faults) {
+  tioa::Automaton a("ClientFaults");
+  for (int p = 0; p < c.robots; ++p)
+    for (const std::string& action : {names::fail_cn(p), names::restart_cn(p)})
+      a.output(action).pre([=](const tioa::State&, const tioa::Params&) { return robot_faults; });
+  return a;
 }
 
 tioa::Automaton environment(const VlConfig& c, Faults faults) {
-  return tioa::compose("RW||VW||VBcast", {rw(c), vw(c, faults.vsas), vbcast(c)});
+  return tioa::compose("RW||VW||VBcast",
+                       {rw(c), vw(c, faults.vsas), vbcast(c), client_faults(c, faults.robots)});
 }
 
 tioa::Automaton vlayer(const VlConfig& c, Faults faults) {
-  std::vector<tioa::Automaton> parts = vlnodes_components(c, faults);
+  std::vector<tioa::Automaton> parts = vlnodes_components(c);
   parts.push_back(rw(c));
   parts.push_back(vw(c, faults.vsas));
   parts.push_back(vbcast(c));
+  parts.push_back(client_faults(c, faults.robots));
   return tioa::compose("VLayer", parts);
 }
 

@@ -5,9 +5,13 @@
 //   identity) VLayer[MC]  = VLNodes[MC] ‖ RW ‖ VW ‖ VBcast
 //
 // Component names: "CN_p" (variables "CN_p.cn.x", "CN_p.delay.held", "CN_p.failed"), "VN_u"
-// ("VN_u.clock", "VN_u.failed"), "RW", "VW", "VBcast". Fail(VBDelay_p ‖ CN_p) has the inputs
-// fail_CN_p / restart_CN_p (driven by the environment: robot failures); Fail(VN_u) has
-// fail_VN_u / restart_VN_u, outputs of VW when vsa_faults holds (D13).
+// ("VN_u.clock", "VN_u.failed"), "RW", "VW", "VBcast", "ClientFaults". Every node is
+// fail-transformed (§5.5). Fail(VBDelay_p ‖ CN_p) has the inputs fail_CN_p / restart_CN_p,
+// outputs of ClientFaults (robot failures come from outside the layer); Fail(VN_u) has
+// fail_VN_u / restart_VN_u, outputs of VW (D13). Each source enables them only when its
+// `Faults` flag holds, so with the flag off they never fire: that is the system from t0 on,
+// after the last failure. Failures before t0 are the start states with `failed` set
+// (U(VLNodes) covers them).
 
 #include <vector>
 
@@ -16,19 +20,19 @@
 
 namespace vlayer {
 
-// Which failures the system has. With robots = false the nodes VBDelay_p ‖ CN_p are not
-// fail-transformed: the executions of Fail(A) in which no fail occurs (failed stays false)
-// are those of A, so this is VLayer[MC] from t0 on, after the last robot failure or restart.
-// vsa = false: VW issues no fail_u/restart_u (D13); Fail(VN_u) keeps its inputs.
+// Which failures and restarts may happen from the start on (robots: of the clients, vsas:
+// of the VSAs).
 struct Faults {
   bool robots = true;
   bool vsas = false;
 };
 
 // The nodes, in the order CN_0..CN_{N−1}, VN_0..VN_{|U|−1}.
-std::vector<tioa::Automaton> vlnodes_components(const VlConfig& config, Faults faults = {});
-tioa::Automaton vlnodes(const VlConfig& config, Faults faults = {});
-// RW ‖ VW ‖ VBcast.
+std::vector<tioa::Automaton> vlnodes_components(const VlConfig& config);
+tioa::Automaton vlnodes(const VlConfig& config);
+// The source of the clients' fail_CN_p / restart_CN_p, enabled only when robot_faults.
+tioa::Automaton client_faults(const VlConfig& config, bool robot_faults);
+// RW ‖ VW ‖ VBcast ‖ ClientFaults: everything outside VLNodes[MC].
 tioa::Automaton environment(const VlConfig& config, Faults faults = {});
 tioa::Automaton vlayer(const VlConfig& config, Faults faults = {});
 

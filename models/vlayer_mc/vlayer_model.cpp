@@ -60,9 +60,7 @@ ModelDefinition vlayer_mc_definition() {
       {"rho2", ParamValue(mc::Rational(9, 10)), 0, 1, "damping of assign", ParamKind::rational,
        true, true},
       {"robot_faults", 0, 0, 1, "1: robots fail and restart at any time (Fail(VBDelay_p||CN_p))"},
-      {"vsa_faults", 0, 0, 1,
-       "1: VW fails and restarts VSAs at any time (known bug F2: with 0 the VSAs' fail/restart "
-       "inputs stay open, so they fail anyway; models/vlayer_mc/README.md)"},
+      {"vsa_faults", 0, 0, 1, "1: VW fails and restarts VSAs at any time (Fail(VN_u))"},
       models::ParamSpec::choice("window", "printed", {"printed", "closed"},
                                 "Def 7.1(2), M_u nonempty: 'printed' (0, e+2d+2eps], 'closed' "
                                 "[0, e+2d+2eps] (README, finding F1)")};

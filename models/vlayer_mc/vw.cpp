@@ -16,10 +16,10 @@ tioa::Automaton vw(const VlConfig& c, bool vsa_faults) {
     a.output(names::time(u), {{"t", 0, c.delta - 1}})
         .pre([=](const State& s, const Params& x) { return s[age[u]] >= 1 && x[0] == s[now]; })
         .eff([=](State& s, const Params&) { s[age[u]] = 0; });
-    if (vsa_faults) {
-      a.output(names::fail_vn(u));
-      a.output(names::restart_vn(u));
-    }
+    // VW owns fail_u and restart_u (line 577). Without vsa_faults they are outputs that are
+    // never enabled, so Fail(VN_u)'s inputs are closed and never fire (finding F2).
+    for (const std::string& action : {names::fail_vn(u), names::restart_vn(u)})
+      a.output(action).pre([=](const State&, const Params&) { return vsa_faults; });
   }
   const int delta = c.delta, eps_sample = c.eps_sample;
   a.trajectories(

@@ -7,7 +7,7 @@
 //              ε_sample time thereafter"
 //
 //   output time(t)_u       pre t = now ∧ age[u] ≥ 1    eff age[u] := 0
-//   output fail_u, restart_u   (only when vsa_faults, D13) no effect on VW
+//   output fail_u, restart_u   enabled only when vsa_faults (D13); no effect on VW
 //   trajectories: now := now + 1 mod δ; ages advance; stop when some age[u] = ε_sample
 
 #include "models/vlayer_mc/config.hpp"

@@ -27,6 +27,17 @@ TEST_CASE("vlayer-mc: exact state count of the smallest instance", "[vlayer]") {
   const models::ModelInstance m = def.build(models::resolve_params(def, {}));
   const checker::PropertyResult r = checker::run_property(m.system, m.properties.at(0), {});
   CHECK(r.verdict == checker::Verdict::holds);
+  CHECK(r.states == 2'706);
+  CHECK(r.edges == 8'993);
+}
+
+// VSA failures anywhere (VW's fail_u/restart_u): these were the counts before finding F2
+// was fixed, when Fail(VN_u)'s inputs stayed open with vsa_faults=0.
+TEST_CASE("vlayer-mc: state count with VSA failures anywhere", "[vlayer]") {
+  const models::ModelDefinition def = models::vlayer_mc_definition();
+  const models::ModelInstance m = def.build(models::resolve_params(def, {"vsa_faults=1"}));
+  const checker::PropertyResult r = checker::run_property(m.system, m.properties.at(0), {});
+  CHECK(r.verdict == checker::Verdict::holds);
   CHECK(r.states == 205'980);
   CHECK(r.edges == 1'309'564);
 }
