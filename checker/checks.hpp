@@ -26,6 +26,11 @@ PropertyResult check_legal_set(const Automaton& system, const StatePredicate& le
 // (a cycle outside L in which time passes), or a deadlock / time-lock outside L.
 PropertyResult check_stabilisation(const Automaton& system, const StatePredicate& legal,
                                    const ExploreOptions& options);
+// The same, where the caller knows that from a `settled` state every execution is in L for
+// good (e.g. L = the states reachable from a set, and `settled` that set): such states are
+// counted in L and not expanded.
+PropertyResult check_stabilisation(const Automaton& system, const StatePredicate& legal,
+                                   const StatePredicate& settled, const ExploreOptions& options);
 
 // Lemma 3.4 as a self-check: with S1 = executions of `system`, S1 -> L1 in t1 and
 // Start(system, L1) -> L2 in t2, the direct measurement S1 -> L2 is at most t1 + t2.

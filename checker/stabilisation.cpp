@@ -32,6 +32,7 @@ struct Graph {
   std::vector<std::uint64_t> offsets; // per state
   std::vector<std::uint32_t> targets; // target | timed bit
   std::vector<std::uint8_t> legal;
+  std::vector<std::uint8_t> settled; // in L for good, not expanded
 
   auto out(StateId v) const {
     return std::make_pair(targets.begin() + static_cast<std::ptrdiff_t>(offsets[v]),
@@ -39,12 +40,17 @@ struct Graph {
   }
 };
 
-Graph build_graph(const Exploration& ex, const StatePredicate& legal) {
+Graph build_graph(const Exploration& ex, const StatePredicate& legal,
+                  const StatePredicate& settled) {
   const std::size_t n = ex.store.size();
   Graph g;
   g.legal.resize(n);
-  for (std::size_t v = 0; v < n; ++v)
-    g.legal[v] = legal(tioa::State(ex.store.state(static_cast<StateId>(v)), 0)) ? 1 : 0;
+  g.settled.resize(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    const tioa::State state(ex.store.state(static_cast<StateId>(v)), 0);
+    g.settled[v] = settled && settled(state) ? 1 : 0;
+    g.legal[v] = g.settled[v] || legal(state) ? 1 : 0;
+  }
   g.offsets.assign(n + 1, 0);
   for (const Edge& e : ex.edge_list)
     ++g.offsets[e.from + 1];
@@ -130,7 +136,8 @@ Components strongly_connected(const Graph& g, std::size_t n) {
       if (internal_timed && last != Components::never)
         c.unbounded_members.push_back(smallest);
       if (!can_tick)
-        c.legal_locks += members.size();
+        for (StateId m : members)
+          c.legal_locks += g.settled[m] ? 0 : 1;
     }
     c.last.push_back(last);
     c.can_tick.push_back(can_tick ? 1 : 0);
@@ -282,9 +289,16 @@ Trace witness(const tioa::SuccessorGenerator& gen, const Exploration& ex, const 
 
 PropertyResult check_stabilisation(const Automaton& system, const StatePredicate& legal,
                                    const ExploreOptions& options) {
+  return check_stabilisation(system, legal, {}, options);
+}
+
+PropertyResult check_stabilisation(const Automaton& system, const StatePredicate& legal,
+                                   const StatePredicate& settled, const ExploreOptions& options) {
   const tioa::SuccessorGenerator gen(system);
   ExploreHooks hooks;
   hooks.record_edges = true;
+  if (settled)
+    hooks.expand = [&](const tioa::Word* s) { return !settled(tioa::State(s, 0)); };
   const Exploration ex = explore(gen, system.start(), options, hooks);
 
   PropertyResult r = result_of("stabilisation", ex, gen);
@@ -292,7 +306,7 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
     mark_incomplete(r, ex, "no execution found to stay outside L so far");
     return r;
   }
-  const Graph g = build_graph(ex, legal);
+  const Graph g = build_graph(ex, legal, settled);
   const Components c = strongly_connected(g, ex.store.size());
   const char* lock_kind = gen.timed() ? "time-lock" : "deadlock";
   if (!c.timelocked_members.empty()) {

@@ -25,14 +25,31 @@ tioa::Automaton cn(const VlConfig& c, int p) {
     return static_cast<int>(s[target]);
   };
   const auto velocity_due = [=](const State& s) { return s.is_bottom(v) || s[v] != desired(s); };
+  // Def 7.1(4b): x* = x, or x* lies nearer than v_max(δ⌈clock/δ⌉ − clock − d_r).
+  const int delta_rule = c.delta, vmax_rule = c.vmax, d_r = c.d_r;
+  const bool filter = c.filter_targets;
+  const auto reachable = [=](Point at, Point goal, int phase) {
+    const int left = phase == 0 ? 0 : delta_rule - phase;
+    return goal == at || lattice.distance(goal, at) < vmax_rule * (left - d_r);
+  };
   const auto cn_update_due = [=](const State& s) {
     return !s.is_bottom(clock) && s[clock] == 0 && s[since] >= 1 && !s.is_bottom(x);
   };
 
   a.input(names::gps_update(p), {{"l", 0, points - 1}, {"t", 0, c.delta - 1}})
       .eff([=](State& s, const Params& m) {
+        // D25 self-stabilisation: a CN whose view was wrong (position or clock) no longer
+        // knows its velocity (v := ⊥, so the stop-when condition outputs a velocity at
+        // once), and a target it cannot reach in this round (Def 7.1(4b)) is dropped. In
+        // every reachable state both are no-ops: the view is right and (4b) holds.
+        const bool wrong =
+            (!s.is_bottom(x) && s[x] != m[0]) || (!s.is_bottom(clock) && s[clock] != m[1]);
         s[x] = m[0];
         s[clock] = m[1];
+        if (wrong)
+          s.set_bottom(v);
+        if (!s.is_bottom(target) && !reachable(m[0], s[target], m[1]))
+          s.set_bottom(target);
       });
   a.output(names::vcast_cn_update(p), {{"l", 0, points - 1}})
       .pre([=](const State& s, const Params& m) { return cn_update_due(s) && m[0] == s[x]; })
@@ -41,7 +58,11 @@ tioa::Automaton cn(const VlConfig& c, int p) {
         s.set_bottom(target);
       });
   a.input(names::vrcv_target_update(p), {{"u", 0, lattice.regions() - 1}, {"x", 0, points - 1}})
-      .eff([=](State& s, const Params& m) { s[target] = m[1]; });
+      .eff([=](State& s, const Params& m) {
+        if (filter && !s.is_bottom(x) && !s.is_bottom(clock) && !reachable(s[x], m[1], s[clock]))
+          return; // D28
+        s[target] = m[1];
+      });
   a.output(names::velocity(p), {{"v", zero_velocity, points - 1}})
       .pre([=](const State& s, const Params& m) { return velocity_due(s) && m[0] == desired(s); })
       .eff([=](State& s, const Params& m) { s[v] = m[0]; });

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "models/vlayer_mc/names.hpp"
+#include "models/vlayer_mc/rw.hpp"
 #include "models/vlayer_mc/slots.hpp"
 
 namespace vlayer {
@@ -76,8 +77,15 @@ ClauseCheck l1mc_clauses(const VlConfig& c, const tioa::Automaton& layer, MWindo
       const std::string who = " " + names::cn_name(static_cast<int>(p));
       if (cn.failed && s.code(*cn.failed) != 0)
         continue;
+      // (3) compares velocity vectors (D4, D27): "steer to q" is the vector of this quantum's
+      // step from RW.loc(p), so steering to the point one stands on is the zero vector, and so
+      // is RW.vel(p) = ⊥ (our RW moves a robot only towards a point, D8).
       const auto v = read(s, cn.v), vel = read(s, cn.vel);
-      if (v && v != vel)
+      const Point at = static_cast<Point>(*read(s, cn.loc));
+      const auto step = [&](std::optional<int> steer) {
+        return !steer || *steer == zero_velocity ? at : lattice.step_toward(at, *steer, vmax);
+      };
+      if (v && step(v) != step(vel))
         broken.push_back("(3)" + who);
       const auto x = read(s, cn.x);
       if (!x)

@@ -1,6 +1,7 @@
 #include "models/vlayer_mc/vlayer_model.hpp"
 
 #include "models/vlayer_mc/legal_sets.hpp"
+#include "models/vlayer_mc/stabilisation.hpp"
 #include "models/vlayer_mc/vlayer.hpp"
 #include "tioa/operators.hpp"
 
@@ -31,6 +32,7 @@ vlayer::VlConfig vlayer_config(const ParamValues& p) {
   c.k = whole(p, "k");
   c.rho1 = p.at("rho1").rational();
   c.rho2 = p.at("rho2").rational();
+  c.filter_targets = whole(p, "filter_targets") == 1;
   return c;
 }
 
@@ -61,6 +63,12 @@ ModelDefinition vlayer_mc_definition() {
        true, true},
       {"robot_faults", 0, 0, 1, "1: robots fail and restart at any time (Fail(VBDelay_p||CN_p))"},
       {"vsa_faults", 0, 0, 1, "1: VW fails and restarts VSAs at any time (Fail(VN_u))"},
+      {"filter_targets", 0, 0, 1,
+       "1: a CN ignores a target it cannot reach in the round (README D28, finding F4)"},
+      {"samples", 1000, 1, 1000000,
+       "lemma-7.3/7.4, theorem-7.5: start states drawn from U(VLNodes) x R(env) when there are "
+       "more than 2 000 000 of them"},
+      {"seed", 1, 0, 1000000000, "seed of that draw"},
       models::ParamSpec::choice("window", "printed", {"printed", "closed"},
                                 "Def 7.1(2), M_u nonempty: 'printed' (0, e+2d+2eps], 'closed' "
                                 "[0, e+2d+2eps] (README, finding F1)")};
@@ -71,7 +79,12 @@ ModelDefinition vlayer_mc_definition() {
       {"reset-in-l1mc", "ResetMC (Def 7.2) is inside L1MC: clauses (2)-(5) imply (1) on the "
                         "reachable states and on ResetMC states built directly"},
       {"lmc-closure", "LMC (the states reachable from ResetMC) is closed, lies inside L1MC and "
-                      "never stops"}};
+                      "never stops"},
+      {"lemma-7.3", "U(VLNodes) with R(Vbcast||RW||VW) is in L1MC from eps_sample + 1 on "
+                    "(measured worst time and witness; start states sampled when too many)"},
+      {"lemma-7.4", "from the L1MC states reached, LMC within delta + d + e (measured)"},
+      {"theorem-7.5", "U(VLNodes) with R(Vbcast||RW||VW) in LMC within delta + d + e + "
+                      "eps_sample, directly and through Lemma 3.4"}};
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     if (p.at("nbh") != 4 && p.at("nbh") != 8)
       return "nbh must be 4 or 8, not " + p.at("nbh").text();
@@ -90,6 +103,9 @@ ModelDefinition vlayer_mc_definition() {
         p.at("window").text() == "closed" ? vlayer::MWindow::closed : vlayer::MWindow::as_printed;
     ModelInstance m{tioa::Start(layer, vlayer::placed_start(layer, at)), {}, "1 time unit"};
     const tioa::Automaton system = m.system;
+    const vlayer::ArbitraryStarts starts{
+        .samples = static_cast<std::uint64_t>(p.at("samples").integer()),
+        .seed = static_cast<std::uint64_t>(p.at("seed").integer())};
     const auto custom = [](std::string name, std::string description,
                            std::function<checker::PropertyResult(const checker::ExploreOptions&)>
                                run) {
@@ -115,6 +131,18 @@ ModelDefinition vlayer_mc_definition() {
         custom("lmc-closure", "LMC, the states reachable from ResetMC, is a legal set inside L1MC",
                [=](const checker::ExploreOptions& o) {
                  return vlayer::check_lmc_closure(c, layer, window, o);
+               }),
+        custom("lemma-7.3", "VLNodes[MC] stabilises to L1MC in time t > eps_sample (seed 000 §7.2)",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer::check_lemma_7_3(c, window, starts, o);
+               }),
+        custom("lemma-7.4", "from L1MC, in LMC within delta + d + e (seed 000 §7.2)",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer::check_lemma_7_4(c, window, starts, o);
+               }),
+        custom("theorem-7.5", "VLNodes[MC] stabilises to LMC in delta + d + e + eps_sample",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer::check_theorem_7_5(c, window, starts, o);
                })};
     return m;
   };

@@ -25,8 +25,8 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
   for (int p = 0; p < n; ++p)
     out.items.push_back(a.optional_integer("out[" + std::to_string(p) + "]", 0, points - 1));
   const auto since = a.clock("since", 1, 1);
-
   const int vn_phase = c.vn_update_phase(), target_phase = c.target_phase();
+
   const auto at_phase = [=](const State& s, int phase) {
     return !s.is_bottom(clock) && s[clock] == phase && s[since] >= 1;
   };
@@ -43,12 +43,24 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
     return false;
   };
 
+  // D26 self-stabilisation: M_u holds reports only in the part of a round where Def 7.1(2)
+  // (read with the window closed, F1) allows them, and only from a round the VSA knew the
+  // time of: a time update that corrects the clock or comes after e + 2d + 2ε empties M,
+  // and a cn-update that arrives after the vn-update (e + d + ε) is ignored. In every
+  // reachable state these are no-ops: the clock is right, cn-updates arrive by e + d, and
+  // M is emptied at e + 2d + 2ε.
+  const auto collecting = [=](int phase) { return phase <= vn_phase; };
   a.input(names::time(u), {{"t", 0, c.delta - 1}}).eff([=](State& s, const Params& m) {
+    const bool wrong = !s.is_bottom(clock) && s[clock] != m[0];
     s[clock] = m[0];
+    if (wrong || m[0] > target_phase)
+      for (int p = 0; p < n; ++p)
+        s.set_bottom(M[p]);
   });
   a.input(names::vrcv_cn_update(u), {{"p", 0, n - 1}, {"l", 0, points - 1}})
       .eff([=](State& s, const Params& m) {
-        if (!s.is_bottom(clock) && lattice.region_of(m[1]) == u) // D16: no clock, no round
+        // D16: no clock, no round.
+        if (!s.is_bottom(clock) && collecting(s[clock]) && lattice.region_of(m[1]) == u)
           s[M[m[0]]] = m[1];
       });
   a.input(names::vrcv_vn_update(u), {{"g", 0, regions - 1}, {"n", 0, n}})

@@ -73,7 +73,7 @@ TEST_CASE("vlayer-mc reset-in-l1mc: reached and built ResetMC states", "[vlayer]
 TEST_CASE("vlayer-mc reset-in-l1mc: with delta = 3, clause (1) is needed", "[vlayer]") {
   const auto r = run("reset-in-l1mc", {"window=closed", "delta=3"});
   CHECK(r.verdict == checker::Verdict::holds);
-  CHECK(r.states == 6'306);
+  CHECK(r.states == 6'518);
   CHECK(figure(r, "reset states reached") == "44");
   CHECK(figure(r, "(2)-(5) without (1)") == "24");
   REQUIRE(r.trace);
