@@ -69,7 +69,7 @@ const std::vector<Case>& cases() {
       {"1x2-r1", "lmc-closure", true, 26'764, 87'874},
       {"1x2-r2", "no-timelock", true, 90'836, 401'524},
       {"1x2-r2", "l1mc-closure", true, 90'836, 401'524},
-      {"1x2-r2", "lmc-closure", false, 5'684'462, 0},
+      {"1x2-r2", "lmc-closure", false, 5'684'462, 23'633'189},
       {"1x3-r1", "no-timelock", true, 32'134, 175'049},
       {"1x3-r1", "l1mc-closure", true, 32'134, 175'049},
       {"1x3-r1", "lmc-closure", true, 451'624, 2'433'131},
@@ -83,12 +83,12 @@ const std::vector<Case>& cases() {
       {"1x2-r3", "l1mc-closure", false, 1'767'536, 9'078'420},
       {"2x2-r1-n4", "no-timelock", false, 1'692'046, 14'538'857},
       {"2x2-r1-n4", "l1mc-closure", false, 1'692'046, 14'538'857},
-      {"1x3-r2", "no-timelock", false, 0, 0},
-      {"1x3-r2", "l1mc-closure", false, 0, 0},
+      {"1x3-r2", "no-timelock", false, 1'158'060, 7'608'698},
+      {"1x3-r2", "l1mc-closure", false, 1'158'060, 7'608'698},
       {"1x2-r2-rf", "no-timelock", false, 0, 0},
       {"1x2-r2-rf", "l1mc-closure", false, 0, 0},
-      {"1x2-r2-vf", "no-timelock", false, 0, 0},
-      {"1x2-r2-vf", "l1mc-closure", false, 0, 0},
+      {"1x2-r2-vf", "no-timelock", false, 16'189'228, 118'637'051},
+      {"1x2-r2-vf", "l1mc-closure", false, 16'189'228, 118'637'051},
       {"2x2-r1-n4", "lmc-closure", false, 0, 0},
       {"2x2-r1-n8", "no-timelock", false, 33'766'734, 0},
       {"2x2-r1-n8", "l1mc-closure", false, 33'766'734, 0},
@@ -130,7 +130,7 @@ long peak_memory_mib() {
 }
 
 void print_header() {
-  std::printf("%-26s %-38s %12s %13s %8s %9s %8s %7s\n", "case", "verdict", "states", "edges",
+  std::printf("%-26s %-52s %12s %13s %8s %9s %8s %7s\n", "case", "verdict", "states", "edges",
               "seconds", "Mstates/s", "peakMiB", "threads");
   std::fflush(stdout);
 }
@@ -168,7 +168,7 @@ int run_case(const Case& c, const Settings& settings) {
     verdict = "incomplete after " + std::to_string(r.states) + " states (" + reason + ")";
   }
   const double rate = r.seconds > 0 ? static_cast<double>(r.states) / r.seconds / 1e6 : 0;
-  std::printf("%-26s %-38s %12llu %13llu %8.2f %9.2f %8ld %7u\n", name_of(c).c_str(),
+  std::printf("%-26s %-52s %12llu %13llu %8.2f %9.2f %8ld %7u\n", name_of(c).c_str(),
               verdict.c_str(), static_cast<unsigned long long>(r.states),
               static_cast<unsigned long long>(r.edges), r.seconds, rate, peak_memory_mib(),
               r.threads);
