@@ -90,7 +90,7 @@ const std::vector<Case>& cases() {
       {"1x2-r2-vf", "no-timelock", false, 16'189'228, 118'637'051},
       {"1x2-r2-vf", "l1mc-closure", false, 16'189'228, 118'637'051},
       {"2x2-r1-n4", "lmc-closure", false, 0, 0},
-      {"2x2-r1-n8", "no-timelock", false, 33'766'734, 0},
+      {"2x2-r1-n8", "no-timelock", false, 33'766'734, 360'688'293},
       {"2x2-r1-n8", "l1mc-closure", false, 33'766'734, 0},
       {"2x2-r2-n4", "no-timelock", false, 0, 0},
       {"2x2-r2-n4", "l1mc-closure", false, 0, 0},
