@@ -123,6 +123,8 @@ Components strongly_connected(const Graph& g, std::size_t n) {
       }
     }
     can_tick = can_tick || internal_timed;
+    for (StateId m : members) // a settled state is in L for good, where time passes
+      can_tick = can_tick || g.settled[m];
     const StateId smallest = *std::min_element(members.begin(), members.end());
     if (outside) {
       last = std::max<std::int64_t>(last, 0);
@@ -136,8 +138,7 @@ Components strongly_connected(const Graph& g, std::size_t n) {
       if (internal_timed && last != Components::never)
         c.unbounded_members.push_back(smallest);
       if (!can_tick)
-        for (StateId m : members)
-          c.legal_locks += g.settled[m] ? 0 : 1;
+        c.legal_locks += members.size();
     }
     c.last.push_back(last);
     c.can_tick.push_back(can_tick ? 1 : 0);

@@ -28,6 +28,7 @@ tioa::Automaton cn(const VlConfig& c, int p) {
   // Def 7.1(4b): x* = x, or x* lies nearer than v_max(δ⌈clock/δ⌉ − clock − d_r).
   const int delta_rule = c.delta, vmax_rule = c.vmax, d_r = c.d_r;
   const bool filter = c.filter_targets;
+  const int target_phase = c.target_phase(), arrival = c.d;
   const auto reachable = [=](Point at, Point goal, int phase) {
     const int left = phase == 0 ? 0 : delta_rule - phase;
     return goal == at || lattice.distance(goal, at) < vmax_rule * (left - d_r);
@@ -40,14 +41,18 @@ tioa::Automaton cn(const VlConfig& c, int p) {
       .eff([=](State& s, const Params& m) {
         // D25 self-stabilisation: a CN whose view was wrong (position or clock) no longer
         // knows its velocity (v := ⊥, so the stop-when condition outputs a velocity at
-        // once), and a target it cannot reach in this round (Def 7.1(4b)) is dropped. In
-        // every reachable state both are no-ops: the view is right and (4b) holds.
-        const bool wrong =
-            (!s.is_bottom(x) && s[x] != m[0]) || (!s.is_bottom(clock) && s[clock] != m[1]);
+        // once) nor trusts its target (taken under the wrong view: x* := ⊥), and a target it
+        // cannot reach in this round (Def 7.1(4b)) is dropped. In every reachable state these
+        // are no-ops on every state reachable without failures: the view is right, (4b) holds.
+        const bool wrong = (!s.is_bottom(x) && (s[x] != m[0] || s.is_bottom(clock))) ||
+                           (!s.is_bottom(clock) && s[clock] != m[1]);
+        const bool fresh = s.is_bottom(x); // a target before its first position is stale
         s[x] = m[0];
         s[clock] = m[1];
         if (wrong)
           s.set_bottom(v);
+        if (wrong || fresh)
+          s.set_bottom(target);
         if (!s.is_bottom(target) && !reachable(m[0], s[target], m[1]))
           s.set_bottom(target);
       });
@@ -59,8 +64,11 @@ tioa::Automaton cn(const VlConfig& c, int p) {
       });
   a.input(names::vrcv_target_update(p), {{"u", 0, lattice.regions() - 1}, {"x", 0, points - 1}})
       .eff([=](State& s, const Params& m) {
-        if (filter && !s.is_bottom(x) && !s.is_bottom(clock) && !reachable(s[x], m[1], s[clock]))
-          return; // D28
+        // D28: targets are computed at e + 2d + 2ε and VBcast takes up to d; without a
+        // position and a clock a CN cannot tell.
+        if (filter && (s.is_bottom(x) || s.is_bottom(clock) || s[clock] < target_phase ||
+                       s[clock] > target_phase + arrival || !reachable(s[x], m[1], s[clock])))
+          return;
         s[target] = m[1];
       });
   a.output(names::velocity(p), {{"v", zero_velocity, points - 1}})

@@ -19,8 +19,9 @@ struct VlConfig {
   int delta = 6, d = 1, e = 0, eps = 0, eps_sample = 1, d_r = 1, vmax = 4;
   int k = 1;
   mc::Rational rho1{1, 2}, rho2{9, 10};
-  // D28: a CN ignores a target-update that it could not reach in the round (Def 7.1(4b)).
-  // Off by default: it hides what a too short round breaks (F3); on, Lemma 7.3 (F4).
+  // D28: a CN ignores a target-update that arrives outside [e + 2d + 2ε, e + 3d + 2ε] or
+  // that it could not reach in the round (Def 7.1(4b)). Off by default: it hides what a too
+  // short round breaks (F3); Lemma 7.3 needs it (F5).
   bool filter_targets = false;
 
   Lattice lattice() const { return Lattice(rows, cols, b, nbh); }
