@@ -42,8 +42,8 @@ tioa::Automaton cn(const VlConfig& c, int p) {
         // D25 self-stabilisation: a CN whose view was wrong (position or clock) no longer
         // knows its velocity (v := ⊥, so the stop-when condition outputs a velocity at
         // once) nor trusts its target (taken under the wrong view: x* := ⊥), and a target it
-        // cannot reach in this round (Def 7.1(4b)) is dropped. In every reachable state these
-        // are no-ops on every state reachable without failures: the view is right, (4b) holds.
+        // cannot reach in this round (Def 7.1(4b)) is dropped. On every state reachable
+        // without failures these are no-ops: the view is right and (4b) holds.
         const bool wrong = (!s.is_bottom(x) && (s[x] != m[0] || s.is_bottom(clock))) ||
                            (!s.is_bottom(clock) && s[clock] != m[1]);
         const bool fresh = s.is_bottom(x); // a target before its first position is stale

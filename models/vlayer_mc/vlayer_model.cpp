@@ -1,6 +1,7 @@
 #include "models/vlayer_mc/vlayer_model.hpp"
 
 #include "models/vlayer_mc/legal_sets.hpp"
+#include "models/vlayer_mc/simulation.hpp"
 #include "models/vlayer_mc/stabilisation.hpp"
 #include "models/vlayer_mc/vlayer.hpp"
 #include "tioa/operators.hpp"
@@ -69,6 +70,9 @@ ModelDefinition vlayer_mc_definition() {
        "lemma-7.3/7.4, theorem-7.5: start states drawn from U(VLNodes) x R(env) when there are "
        "more than 2 000 000 of them"},
       {"seed", 1, 0, 1000000000, "seed of that draw"},
+      models::ParamSpec::choice("rmc", "loose", {"loose", "strict", "loose-reg"},
+                                "lemma-7.6/7.7: the reading of R_MC's unprinted parts (README "
+                                "D19-D21, finding F4)"),
       models::ParamSpec::choice("window", "printed", {"printed", "closed"},
                                 "Def 7.1(2), M_u nonempty: 'printed' (0, e+2d+2eps], 'closed' "
                                 "[0, e+2d+2eps] (README, finding F1)")};
@@ -84,7 +88,10 @@ ModelDefinition vlayer_mc_definition() {
                     "(measured worst time and witness; start states sampled when too many)"},
       {"lemma-7.4", "from the L1MC states reached, LMC within delta + d + e (measured)"},
       {"theorem-7.5", "U(VLNodes) with R(Vbcast||RW||VW) in LMC within delta + d + e + "
-                      "eps_sample, directly and through Lemma 3.4"}};
+                      "eps_sample, directly and through Lemma 3.4"},
+      {"lemma-7.6", "R_MC (seed 000 §7.3) is a simulation relation, on the pairs reached from "
+                    "Lemma 7.7's pairs"},
+      {"lemma-7.7", "every state of the reset family is R_MC-related to a reachable state"}};
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     if (p.at("nbh") != 4 && p.at("nbh") != 8)
       return "nbh must be 4 or 8, not " + p.at("nbh").text();
@@ -103,6 +110,10 @@ ModelDefinition vlayer_mc_definition() {
         p.at("window").text() == "closed" ? vlayer::MWindow::closed : vlayer::MWindow::as_printed;
     ModelInstance m{tioa::Start(layer, vlayer::placed_start(layer, at)), {}, "1 time unit"};
     const tioa::Automaton system = m.system;
+    const std::string rmc_text = p.at("rmc").text();
+    const vlayer::RmcReading reading = rmc_text == "strict"      ? vlayer::RmcReading::strict
+                                       : rmc_text == "loose-reg" ? vlayer::RmcReading::loose_reg
+                                                                 : vlayer::RmcReading::loose;
     const vlayer::ArbitraryStarts starts{
         .samples = static_cast<std::uint64_t>(p.at("samples").integer()),
         .seed = static_cast<std::uint64_t>(p.at("seed").integer())};
@@ -143,6 +154,14 @@ ModelDefinition vlayer_mc_definition() {
         custom("theorem-7.5", "VLNodes[MC] stabilises to LMC in delta + d + e + eps_sample",
                [=](const checker::ExploreOptions& o) {
                  return vlayer::check_theorem_7_5(c, window, starts, o);
+               }),
+        custom("lemma-7.6", "R_MC is a simulation relation for VLayer[MC] (seed 000 §7.3)",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer::check_lemma_7_6(c, layer, window, o, reading);
+               }),
+        custom("lemma-7.7", "each ResetMC state is R_MC-related to a reachable state (§7.3)",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer::check_lemma_7_7(c, layer, window, o, reading);
                })};
     return m;
   };
@@ -159,7 +178,25 @@ ModelDefinition vlayer_mc_definition() {
              {{}, "lmc-closure", checker::Verdict::violated}, // F1 from a ResetMC state
              {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
               "lmc-closure",
-              checker::Verdict::holds}};
+              checker::Verdict::holds},
+             // §7.2 on 1×1 (a second or two each): 7.3 and 7.5 start from a sample of
+             // U(VLNodes) x R(env), so "incomplete" is their honest verdict.
+             {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
+              "lemma-7.3",
+              checker::Verdict::incomplete},
+             {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
+              "lemma-7.4",
+              checker::Verdict::holds},
+             {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
+              "theorem-7.5",
+              checker::Verdict::incomplete},
+             // §7.3 on 1×1: R_MC is a simulation; Lemma 7.7 fails as printed (finding F4).
+             {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
+              "lemma-7.6",
+              checker::Verdict::holds},
+             {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
+              "lemma-7.7",
+              checker::Verdict::violated}};
   return d;
 }
 

@@ -46,9 +46,9 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
   // D26 self-stabilisation: M_u holds reports only in the part of a round where Def 7.1(2)
   // (read with the window closed, F1) allows them, and only from a round the VSA knew the
   // time of: a time update that corrects the clock or comes after e + 2d + 2ε empties M,
-  // and a cn-update that arrives after the vn-update (e + d + ε) is ignored. In every
-  // state reachable without failures these are no-ops: the clock is right, cn-updates arrive by e +
-  // d, and M is emptied at e + 2d + 2ε.
+  // and a cn-update that arrives after the vn-update (e + d + ε) is ignored. On every state
+  // reachable without failures these are no-ops: the clock is right, cn-updates arrive by
+  // e + d, and M is emptied at e + 2d + 2ε.
   const auto collecting = [=](int phase) { return phase <= vn_phase; };
   a.input(names::time(u), {{"t", 0, c.delta - 1}}).eff([=](State& s, const Params& m) {
     const bool wrong = !s.is_bottom(clock) && s[clock] != m[0];

@@ -285,6 +285,23 @@ TEST_CASE("stabilisation: a timed countdown stabilises in exactly top quanta",
   CHECK(r.notes.empty());
 }
 
+// Settled states (the caller vouches that executions are in L for good from them) are not
+// expanded and count as letting time pass: with x <= 2 settled, the timed countdown from 4
+// is in L from time 2 on, and no time-lock or deadlock note is given for them.
+TEST_CASE("stabilisation: settled states end the measurement", "[checker][stabilisation]") {
+  const tioa::Automaton c = timed_countdown(4);
+  const tioa::StatePredicate settled = [&](const tioa::State& s) {
+    return s.get<int>(tioa::find_variable<int>(c, "x")) <= 2;
+  };
+  const PropertyResult r = check_stabilisation(c, x_is_zero(c), settled, {});
+  CHECK(r.verdict == Verdict::holds);
+  CHECK(r.worst_time == 2u);
+  CHECK(r.notes.empty());
+  REQUIRE(r.trace);
+  CHECK(value_of(c, r.trace->steps.back().state, "x") == 2);
+  CHECK(replays(c, *r.trace));
+}
+
 TEST_CASE("stabilisation: zero-time cycles outside L give a note, not a violation",
           "[checker][stabilisation]") {
   // As the timed countdown, with a flag that flips in zero time while x > 0: each x > 0
