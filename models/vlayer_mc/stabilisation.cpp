@@ -332,8 +332,8 @@ std::string last_outside(const PropertyResult& r, const tioa::StatePredicate& le
       std::string broken;
       for (const auto& clause : clauses(s))
         broken += (broken.empty() ? "" : ", ") + clause;
-      return "at time " + count(it->time) + " (after " +
-             (it->action.empty() ? std::string("the start") : it->action) + ") it breaks " + broken;
+      return "the last state outside, at time " + count(it->time) + " after " +
+             (it->action.empty() ? std::string("the start") : it->action) + ", breaks " + broken;
     }
   }
   return "";
@@ -366,7 +366,7 @@ PropertyResult judge(PropertyResult m, std::uint64_t bound, const std::string& w
     m.trace_role = exact ? "counterexample" : "witness";
     m.verdict = exact ? Verdict::violated : Verdict::incomplete;
     m.message = what + (exact ? " fails: " : " not confirmed: ") + measured +
-                (detail.empty() ? "" : "; the witness " + detail);
+                (detail.empty() ? "" : "; " + detail);
     return m;
   }
   m.verdict = exhaustive ? Verdict::holds : Verdict::incomplete;
