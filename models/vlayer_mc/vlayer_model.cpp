@@ -165,38 +165,25 @@ ModelDefinition vlayer_mc_definition() {
                })};
     return m;
   };
-  // Each well under a second (tests/models/vlayer_mc/legal_sets_test.cpp pins the counts).
+  // Each well under a few seconds (tests/models/vlayer_mc/*_test.cpp pin the counts).
+  const ParamValues closed_1x1{{"window", ParamValue::choice("closed")}, {"cols", 1}};
   d.suite = {{{}, "no-timelock", checker::Verdict::holds},
              {{}, "l1mc-closure", checker::Verdict::violated}, // finding F1
-             {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
-              "l1mc-closure",
-              checker::Verdict::holds},
+             {closed_1x1, "l1mc-closure", checker::Verdict::holds},
              {{{"window", ParamValue::choice("closed")}, {"cols", 1}, {"delta", 4}},
               "l1mc-closure",
               checker::Verdict::violated}, // δ breaks the round-length rule
              {{{"cols", 1}}, "reset-in-l1mc", checker::Verdict::holds},
              {{}, "lmc-closure", checker::Verdict::violated}, // F1 from a ResetMC state
-             {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
-              "lmc-closure",
-              checker::Verdict::holds},
+             {closed_1x1, "lmc-closure", checker::Verdict::holds},
              // §7.2 on 1×1 (a second or two each): 7.3 and 7.5 start from a sample of
              // U(VLNodes) x R(env), so "incomplete" is their honest verdict.
-             {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
-              "lemma-7.3",
-              checker::Verdict::incomplete},
-             {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
-              "lemma-7.4",
-              checker::Verdict::holds},
-             {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
-              "theorem-7.5",
-              checker::Verdict::incomplete},
+             {closed_1x1, "lemma-7.3", checker::Verdict::incomplete},
+             {closed_1x1, "lemma-7.4", checker::Verdict::holds},
+             {closed_1x1, "theorem-7.5", checker::Verdict::incomplete},
              // §7.3 on 1×1: R_MC is a simulation; Lemma 7.7 fails as printed (finding F4).
-             {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
-              "lemma-7.6",
-              checker::Verdict::holds},
-             {{{"window", ParamValue::choice("closed")}, {"cols", 1}},
-              "lemma-7.7",
-              checker::Verdict::violated}};
+             {closed_1x1, "lemma-7.6", checker::Verdict::holds},
+             {closed_1x1, "lemma-7.7", checker::Verdict::violated}};
   return d;
 }
 
