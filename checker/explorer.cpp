@@ -48,6 +48,7 @@ public:
     size_ += words_;
   }
   const Word* operator[](std::size_t index) const { return storage_.data() + index * words_; }
+  std::size_t bytes() const { return storage_.capacity() * sizeof(Word); }
 
 private:
   std::uint32_t words_;
@@ -72,6 +73,12 @@ struct Worker {
   std::uint64_t edge_count = 0;
   std::uint64_t expanded = 0;
   std::exception_ptr error;
+
+  // What this worker holds (its buffers keep their memory between levels).
+  std::size_t bytes() const {
+    return pending_states.bytes() + states.bytes() + pending.capacity() * sizeof(Pending) +
+           candidates.capacity() * sizeof(Candidate) + edges.capacity() * sizeof(Edge);
+  }
 
   void clear() {
     states.clear();
@@ -113,10 +120,18 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   auto at_state_limit = [&](const Word* state, std::uint64_t hash) {
     return limits.max_states && ex.store.size() >= limits.max_states && !ex.store.find(state, hash);
   };
+  // The limit counts the store, the parents, the edges and the workers' level buffers.
+  std::vector<Worker> workers(ex.threads, Worker(words));
+  auto memory_bytes = [&] {
+    std::size_t bytes = ex.memory_bytes();
+    for (const Worker& w : workers)
+      bytes += w.bytes();
+    return bytes;
+  };
   auto check_time_and_memory = [&] {
     if (limits.max_seconds > 0 && progress.elapsed() > limits.max_seconds)
       stop(StopReason::time_limit);
-    else if (limits.max_memory_bytes && ex.memory_bytes() > limits.max_memory_bytes)
+    else if (limits.max_memory_bytes && memory_bytes() > limits.max_memory_bytes)
       stop(StopReason::memory_limit);
   };
 
@@ -165,10 +180,9 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   } catch (const StopEnumeration&) {
   }
 
-  std::vector<Worker> workers(ex.threads, Worker(words));
   for (auto& w : workers)
     w.scratch.assign(words + 1, 0);
-  std::atomic<bool> out_of_time{false};
+  std::atomic<bool> out_of_time{false}, out_of_memory{false};
 
   std::size_t used = 1; // threads expanding the current level
   auto expand_chunk = [&](Worker& w, std::size_t begin, std::size_t end) {
@@ -182,6 +196,16 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
               return;
             if (progress.elapsed() > limits.max_seconds) {
               out_of_time = true;
+              return;
+            }
+          }
+          // Within a level the successors pile up in the workers' buffers: estimate the
+          // whole level from this worker's share.
+          if (limits.max_memory_bytes) {
+            if (out_of_memory.load(std::memory_order_relaxed))
+              return;
+            if (ex.memory_bytes() + w.bytes() * used > limits.max_memory_bytes) {
+              out_of_memory = true;
               return;
             }
           }
@@ -278,6 +302,8 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
     }
     if (out_of_time)
       stop(StopReason::time_limit);
+    else if (out_of_memory)
+      stop(StopReason::memory_limit);
     if (!stopped)
       check_time_and_memory();
     frontier.swap(next);

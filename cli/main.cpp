@@ -94,8 +94,10 @@ void add_run_options(CLI::App* command, cli::RunSettings& settings, Limits& limi
       ->type_name("S")
       ->check(seconds);
   command
-      ->add_option("--max-memory", limits.max_memory_mib,
-                   "stop when the state store exceeds MiB mebibytes (0: no limit)")
+      ->add_option(
+          "--max-memory", limits.max_memory_mib,
+          "stop when the exploration (state store, edges, the level in progress) exceeds MiB "
+          "mebibytes (0: no limit)")
       ->type_name("MiB")
       ->check(whole_number);
   if (with_trace) {
