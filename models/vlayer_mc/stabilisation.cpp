@@ -196,7 +196,8 @@ StateList reached_where(const tioa::Automaton& system, const tioa::StatePredicat
 // combination of failed nodes, compared up to variables nothing reads again: once no node
 // fails or restarts any more, a failed node is frozen and nothing reads its variables; and
 // an empty VBDelay or VBcast slot keeps the age and payload of its last message, which the
-// next vcast overwrites. Both are set to their initial values before comparing.
+// next vcast overwrites. Both are set to their initial values before comparing; and a robot's
+// RW.vel that moves it nowhere is written as 0.
 class KnownLmc {
 public:
   KnownLmc(const VlConfig& c, const tioa::Automaton& layer, const checker::ExploreOptions& o)
@@ -217,6 +218,7 @@ public:
     };
     const int robots = c.robots, regions = c.lattice().regions();
     for (int p = 0; p < robots; ++p) {
+      velocities_.emplace_back(slot(at("RW.vel", p)), slot(at("RW.loc", p)));
       const std::string cn = names::cn_name(p) + ".delay.";
       guarded(cn + "held", {cn + "age", cn + "loc"});
       guarded(at("VBcast.cn_pending", p), {at("VBcast.cn_age", p), at("VBcast.cn_loc", p)});
@@ -283,6 +285,13 @@ private:
   }
 
   void canonical(tioa::State& s) const {
+    // RW.vel(p) = ⊥ and "steer to the point it stands on" move the robot exactly as 0 does
+    // (D8, D27), and every velocity output overwrites them.
+    for (const auto& [vel, loc] : velocities_) {
+      const std::uint64_t code = s.code(vel);
+      if (code == vel.value_codes || code == s.code(loc) + 1) // ⊥, or the point of loc
+        s.set_code(vel, 0);                                   // zero_velocity
+    }
     for (const Guarded& g : slots_)
       if (s.code(g.guard) == 0)
         for (const auto& [slot, code] : g.rest)
@@ -296,6 +305,7 @@ private:
   std::uint32_t words_;
   std::vector<Node> nodes_;
   std::vector<Guarded> slots_;
+  std::vector<std::pair<tioa::Slot, tioa::Slot>> velocities_; // RW.vel[p], RW.loc[p]
   std::uint64_t family_size_ = 0;
   bool complete_ = false;
   std::shared_ptr<checker::StateStore> known_;
