@@ -32,17 +32,10 @@
 
 #include "checker/options.hpp"
 #include "checker/result.hpp"
+#include "models/vlayer_mc/arbitrary_starts.hpp"
 #include "models/vlayer_mc/l1mc.hpp"
 
 namespace vlayer {
-
-struct ArbitraryStarts {
-  std::uint64_t samples = 1000;
-  std::uint64_t seed = 1;
-  std::uint64_t exhaustive_limit = 2'000'000;
-  // Reach(env) is listed when it has at most this many states, else walked at random.
-  std::uint64_t environment_limit = 200'000;
-};
 
 checker::PropertyResult check_lemma_7_3(const VlConfig& config, MWindow window,
                                         const ArbitraryStarts& starts,
