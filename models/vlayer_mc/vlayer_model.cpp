@@ -65,7 +65,8 @@ ModelDefinition vlayer_mc_definition() {
       {"robot_faults", 0, 0, 1, "1: robots fail and restart at any time (Fail(VBDelay_p||CN_p))"},
       {"vsa_faults", 0, 0, 1, "1: VW fails and restarts VSAs at any time (Fail(VN_u))"},
       {"filter_targets", 0, 0, 1,
-       "1: a CN ignores a target it cannot reach in the round (README D28, finding F4)"},
+       "1: a CN ignores a target-update that arrives outside its window or that it cannot "
+       "reach in the round (README D28, finding F5)"},
       {"samples", 1000, 1, 1000000,
        "lemma-7.3/7.4, theorem-7.5: start states drawn from U(VLNodes) x R(env) when there are "
        "more than 2 000 000 of them"},
