@@ -9,31 +9,15 @@
 #include "models/registry.hpp"
 #include "models/vlayer_mc/lmc.hpp"
 #include "models/vlayer_mc/vlayer_model.hpp"
+#include "tests/models/vlayer_mc/vl_results.hpp"
+
+using vl_test::figure;
+using vl_test::has_note;
 
 namespace {
 
 checker::PropertyResult run(const std::string& property, std::vector<std::string> settings) {
-  const models::ModelDefinition def = models::vlayer_mc_definition();
-  const models::ModelInstance m = def.build(models::resolve_params(def, settings));
-  for (const auto& p : m.properties)
-    if (p.name == property)
-      return checker::run_property(m.system, p, {});
-  FAIL("no property " << property);
-  return {};
-}
-
-std::string figure(const checker::PropertyResult& r, const std::string& name) {
-  for (const auto& [key, value] : r.figures)
-    if (key == name)
-      return value;
-  return "";
-}
-
-bool has_note(const checker::PropertyResult& r, const std::string& start) {
-  for (const auto& note : r.notes)
-    if (note.rfind(start, 0) == 0)
-      return true;
-  return false;
+  return vl_test::run_property(property, settings).result;
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 #include "models/vlayer_mc/simulation.hpp"
 #include "models/vlayer_mc/vlayer.hpp"
 #include "tests/models/vlayer_mc/vl_helpers.hpp"
+#include "tests/models/vlayer_mc/vl_results.hpp"
 
 using namespace vl_test;
 
@@ -54,13 +55,6 @@ struct Pairs {
     return s;
   }
 };
-
-std::string figure(const checker::PropertyResult& r, const std::string& name) {
-  for (const auto& [key, value] : r.figures)
-    if (key == name)
-      return value;
-  return "";
-}
 
 vlayer::VlConfig grid(int cols) {
   vlayer::VlConfig c;

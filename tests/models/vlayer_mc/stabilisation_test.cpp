@@ -4,34 +4,17 @@
 // with seed 1 from U(VLNodes) × R(env); and finding F5 on 1×2 (README).
 #include <catch2/catch.hpp>
 
-#include "checker/property.hpp"
 #include "checker/trace.hpp"
-#include "models/registry.hpp"
-#include "models/vlayer_mc/vlayer_model.hpp"
+#include "tests/models/vlayer_mc/vl_results.hpp"
+
+using vl_test::figure;
 
 namespace {
 
-struct Run {
-  checker::PropertyResult result;
-  tioa::Automaton system;
-};
-
-Run run(const std::string& property, std::vector<std::string> settings) {
-  const models::ModelDefinition def = models::vlayer_mc_definition();
+// Every run here reads Def 7.1(2) with the window closed (finding F1).
+vl_test::PropertyRun run(const std::string& property, std::vector<std::string> settings) {
   settings.push_back("window=closed");
-  const models::ModelInstance m = def.build(models::resolve_params(def, settings));
-  for (const auto& p : m.properties)
-    if (p.name == property)
-      return {checker::run_property(m.system, p, {}), m.system};
-  FAIL("no property " << property);
-  return {{}, m.system};
-}
-
-std::string figure(const checker::PropertyResult& r, const std::string& name) {
-  for (const auto& [key, value] : r.figures)
-    if (key == name)
-      return value;
-  return "";
+  return vl_test::run_property(property, settings);
 }
 
 } // namespace
