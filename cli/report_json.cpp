@@ -1,5 +1,6 @@
 #include "cli/report_json.hpp"
 
+#include <algorithm>
 #include <charconv>
 
 #include "checker/trace.hpp"
@@ -10,7 +11,7 @@ namespace cli {
 namespace {
 
 // A variable's value as JSON: numbers for integers and clocks, true/false for booleans,
-// strings for enumerations and ⊥.
+// strings for enumerations and ⊥, arrays of element names for sets.
 Json value_json(const tioa::VariableInfo& variable, const std::string& text) {
   switch (variable.kind) {
   case tioa::VariableKind::boolean:
@@ -24,6 +25,15 @@ Json value_json(const tioa::VariableInfo& variable, const std::string& text) {
     if (error == std::errc() && end == text.data() + text.size())
       return number;
     break;
+  }
+  case tioa::VariableKind::set: {
+    Json elements = Json::array();
+    for (std::size_t start = 1; start + 1 < text.size();) {
+      const std::size_t end = std::min(text.find(", ", start), text.size() - 1);
+      elements.push_back(text.substr(start, end - start));
+      start = end + 2;
+    }
+    return elements;
   }
   default:
     break;

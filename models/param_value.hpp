@@ -31,16 +31,24 @@ public:
   const Rational& rational() const;
   std::string text() const; // "5", "9/10", "line"
 
-  // Equal: the same number, or the same choice. The order is that of the numbers (choices
-  // are not ordered; a choice compares as 0).
+  // Equal: the same number, or the same choice. The order is that of the numbers; a choice
+  // counts as 0, after the number 0, and choices are ordered by name. The order is strict
+  // and weak, consistent with ==, so that parameter sets can key a std::map (two
+  // scenarios of one model were once one key there).
   friend bool operator==(const ParamValue& a, const ParamValue& b) {
     return a.is_choice_ == b.is_choice_ && a.value_ == b.value_ && a.name_ == b.name_;
   }
   friend bool operator!=(const ParamValue& a, const ParamValue& b) { return !(a == b); }
-  friend bool operator<(const ParamValue& a, const ParamValue& b) { return a.value_ < b.value_; }
-  friend bool operator<=(const ParamValue& a, const ParamValue& b) { return a.value_ <= b.value_; }
-  friend bool operator>(const ParamValue& a, const ParamValue& b) { return a.value_ > b.value_; }
-  friend bool operator>=(const ParamValue& a, const ParamValue& b) { return a.value_ >= b.value_; }
+  friend bool operator<(const ParamValue& a, const ParamValue& b) {
+    if (a.value_ != b.value_)
+      return a.value_ < b.value_;
+    if (a.is_choice_ != b.is_choice_)
+      return b.is_choice_;
+    return a.name_ < b.name_;
+  }
+  friend bool operator<=(const ParamValue& a, const ParamValue& b) { return !(b < a); }
+  friend bool operator>(const ParamValue& a, const ParamValue& b) { return b < a; }
+  friend bool operator>=(const ParamValue& a, const ParamValue& b) { return !(a < b); }
 
 private:
   Rational value_;

@@ -6,6 +6,7 @@
 #include "models/fischer/fischer.hpp"
 #include "models/mc/mc_round_model.hpp"
 #include "models/mc/rational.hpp"
+#include "models/path_reservation/path_reservation_model.hpp"
 #include "models/token_ring/token_ring.hpp"
 #include "models/vlayer_mc/vlayer_model.hpp"
 
@@ -55,7 +56,8 @@ std::string ParamSpec::range() const {
 
 const std::vector<ModelDefinition>& all_models() {
   static const std::vector<ModelDefinition> models{token_ring_definition(), fischer_definition(),
-                                                   mc_round_definition(), vlayer_mc_definition()};
+                                                   mc_round_definition(), vlayer_mc_definition(),
+                                                   path_reservation_definition()};
   return models;
 }
 

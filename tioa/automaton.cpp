@@ -74,6 +74,33 @@ Variable<int> Automaton::optional_integer(const std::string& name, int lo, int h
   return Variable<int>{declare(std::move(info))};
 }
 
+Variable<int> Automaton::subset(const std::string& name, std::vector<std::string> elements,
+                                std::optional<int> initial) {
+  if (elements.empty() || elements.size() > 16)
+    throw ModelError("set '" + name + "' needs 1..16 elements");
+  VariableInfo info;
+  info.name = name;
+  info.kind = VariableKind::set;
+  info.hi = (1 << elements.size()) - 1;
+  info.enum_names = std::move(elements);
+  if (initial) {
+    if (*initial < 0 || *initial > info.hi)
+      throw ModelError("initial value of set '" + name + "' is not a subset of its elements");
+    info.initial_code = static_cast<std::uint64_t>(*initial);
+  }
+  return Variable<int>{declare(std::move(info))};
+}
+
+VariableArray<int> Automaton::subsets(const std::string& name, IdRange ids,
+                                      const std::vector<std::string>& elements,
+                                      std::optional<int> initial) {
+  VariableArray<int> out;
+  out.first = ids.first;
+  for (std::size_t i = ids.first; i < ids.first + ids.count; ++i)
+    out.items.push_back(subset(indexed(name, i), elements, initial));
+  return out;
+}
+
 Variable<int> Automaton::clock(const std::string& name, int cap, std::optional<int> initial,
                                bool with_bottom) {
   if (cap < 0)

@@ -110,12 +110,18 @@ public:
     }
     return Variable<E>{declare(std::move(info))};
   }
+  // A subset of `elements` (at most 16), e.g. the paper's G_i ⊆ {R1, ..., Rn}: an int
+  // bit mask (bit k: elements[k]) shown as "{R1, R3}".
+  Variable<int> subset(const std::string& name, std::vector<std::string> elements,
+                       std::optional<int> initial);
   // Arrays (maps from ids to variables): `ids` is a count (ids 0..count-1) or ids(a, b).
   VariableArray<bool> booleans(const std::string& name, IdRange ids, std::optional<bool> initial);
   VariableArray<int> integers(const std::string& name, IdRange ids, int lo, int hi,
                               std::optional<int> initial);
   VariableArray<int> clocks(const std::string& name, IdRange ids, int cap,
                             std::optional<int> initial, bool with_bottom = false);
+  VariableArray<int> subsets(const std::string& name, IdRange ids,
+                             const std::vector<std::string>& elements, std::optional<int> initial);
   template <class E>
   VariableArray<E> enumerations(const std::string& name, IdRange ids,
                                 const std::vector<std::string>& names, std::optional<E> initial) {

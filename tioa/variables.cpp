@@ -33,6 +33,13 @@ std::string VariableInfo::render_code(std::uint64_t code) const {
     return code ? "true" : "false";
   case VariableKind::enumeration:
     return code < enum_names.size() ? enum_names[code] : std::to_string(code);
+  case VariableKind::set: {
+    std::string out;
+    for (std::size_t k = 0; k < enum_names.size(); ++k)
+      if (code >> k & 1)
+        out += (out.empty() ? "" : ", ") + enum_names[k];
+    return "{" + out + "}";
+  }
   default:
     return std::to_string(lo + static_cast<std::int64_t>(code));
   }

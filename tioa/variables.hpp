@@ -13,7 +13,8 @@ namespace tioa {
 
 using Word = std::uint64_t;
 
-enum class VariableKind { boolean, integer, enumeration, clock };
+// `set`: a subset of a small named universe, as a bit mask (bit k: enum_names[k]).
+enum class VariableKind { boolean, integer, enumeration, clock, set };
 
 // Where a variable lives inside the state of the automaton that declared it.
 // `offset` is relative to the first bit of that automaton's part of a state.

@@ -2,6 +2,8 @@
 // consistently and gives the suite's expected verdicts; parameters are checked.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include <set>
 
 #include "models/registry.hpp"
@@ -34,8 +36,12 @@ TEST_CASE("registry: every model builds with its defaults and lists its properti
     CHECK_FALSE(def.description.empty());
     CHECK(&models::find_model(def.name) == &def);
     for (const auto& p : def.params) {
-      CHECK(p.lo <= p.default_value);
-      CHECK(p.default_value <= p.hi);
+      if (p.kind == models::ParamKind::choice) {
+        CHECK(std::count(p.choices.begin(), p.choices.end(), p.default_value.text()) == 1);
+      } else {
+        CHECK(p.lo <= p.default_value);
+        CHECK(p.default_value <= p.hi);
+      }
       CHECK_FALSE(p.description.empty());
     }
     const models::ParamValues defaults = models::resolve_params(def, {});
@@ -93,7 +99,8 @@ TEST_CASE("registry: find_model names the known models when it fails", "[models]
     models::find_model("fisher");
     FAIL("no UsageError");
   } catch (const UsageError& e) {
-    CHECK(std::string(e.what()) == "unknown model 'fisher' (known: token-ring, fischer, mc-round, vlayer-mc)");
+    CHECK(std::string(e.what()) == "unknown model 'fisher' (known: token-ring, fischer, mc-round, "
+                                   "vlayer-mc, path-reservation)");
   }
 }
 
@@ -151,4 +158,19 @@ TEST_CASE("resolve_params: bad settings are a UsageError with a clear message",
     CHECK(usage_error("token-ring", {"N=3", "K=x", "M=1"}) ==
           "parameter K: 'x' is not a whole number");
   }
+}
+
+// Regression: the suite keys its built instances by parameter set; ParamValue's order once
+// made every choice equal, so `scenario=head-on` reused the instance of `scenario=crossing`.
+TEST_CASE("ParamValue: choices are ordered, so parameter sets can key a map",
+          "[models][registry][params]") {
+  const auto a = models::ParamValue::choice("crossing"), b = models::ParamValue::choice("head-on");
+  CHECK(a < b);
+  CHECK_FALSE(b < a);
+  CHECK(models::ParamValue(0) < a);
+  CHECK(models::ParamValue(1) > a);
+  std::map<models::ParamValues, int> keyed;
+  keyed[{{"scenario", a}}] = 1;
+  keyed[{{"scenario", b}}] = 2;
+  CHECK(keyed.size() == 2);
 }

@@ -169,3 +169,17 @@ TEST_CASE("automaton: the declared start set follows later declarations", "[tioa
   a.trajectories({});
   CHECK(a.timed());
 }
+
+TEST_CASE("automaton: a subset variable is a bit mask shown by its element names",
+          "[automaton]") {
+  tioa::Automaton a("sets");
+  const auto g = a.subset("G", {"R1", "R2", "R3"}, 0);
+  const auto* info = a.layout().find("G");
+  REQUIRE(info);
+  CHECK(info->kind == tioa::VariableKind::set);
+  CHECK(info->render_code(0) == "{}");
+  CHECK(info->render_code(5) == "{R1, R3}");
+  CHECK(g.slot.width == 3);
+  CHECK_THROWS_AS(a.subset("H", {}, 0), tioa::ModelError);
+  CHECK_THROWS_AS(a.subset("K", {"R1"}, 2), tioa::ModelError);
+}

@@ -1,0 +1,598 @@
+#include "models/path_reservation/protocol.hpp"
+
+#include <array>
+#include <memory>
+
+#include "tioa/errors.hpp"
+
+namespace path_reservation {
+
+using tioa::Params;
+using tioa::State;
+
+namespace {
+
+using Geometry = PathGeometry;
+
+std::vector<std::string> robot_names(int n) {
+  std::vector<std::string> names;
+  for (int r = 1; r <= n; ++r)
+    names.push_back("R" + std::to_string(r));
+  return names;
+}
+
+int bit(int robot) {
+  return 1 << (robot - 1);
+}
+bool has(int set, int robot) {
+  return (set >> (robot - 1) & 1) != 0;
+}
+
+std::string name2(const std::string& name, int i) {
+  return name + "[" + std::to_string(i) + "]";
+}
+
+// Messages that carry the sender's zone (its chunk; ⊥: none in flight) and its Overlap
+// list: the pairs (sender, x), which of them are "AfterMe", and the zone of each x.
+struct ListMessages {
+  std::vector<tioa::VariableArray<int>> chunk, list, after_me; // [from][to]
+  std::vector<std::vector<tioa::VariableArray<int>>> zone;     // [from][to][x]
+};
+
+struct ReceivedList {
+  int chunk = 0, list = 0, after_me = 0;
+  std::array<int, max_robots + 1> zone{};
+};
+
+// The per-robot variables of Algorithm 1 (§5.3) and the messages in flight (§2).
+struct Vars {
+  tioa::VariableArray<Phase> phase;
+  tioa::VariableArray<int> chunk, step;
+  tioa::VariableArray<int> pings;     // Discover_i: robots whose reply is still due (§3)
+  tioa::VariableArray<int> group;     // G_i
+  tioa::VariableArray<int> heard;     // the members of G_i whose msg_j has arrived
+  tioa::VariableArray<int> overlap;   // Overlap_i
+  tioa::VariableArray<int> after_me;  // the members of Overlap_i of type "AfterMe"
+  tioa::VariableArray<int> exchanged; // the members of Overlap_i whose Overlap_j arrived
+  tioa::VariableArray<int> preds;     // WLAfter_{->i}
+  tioa::VariableArray<int> succs;     // WLAfter_{i->}
+  tioa::VariableArray<int> released;  // release messages received for the current chunk
+  tioa::VariableArray<path_reservation::Exception> exception;
+  // Depend_i: row x holds the pairs (R_x, R_y), and which of them are "AfterMe"; the
+  // chunk of each robot's zone as R_i has learnt it.
+  std::vector<tioa::VariableArray<int>> depend, depend_after_me, known_zone;
+  // Messages in flight from i to j, at most one of each kind (a second is a ModelError).
+  std::vector<tioa::VariableArray<int>> req, release; // the sender's chunk
+  std::vector<tioa::VariableArray<bool>> ok;
+  ListMessages after_me_msg, overlap_msg;
+};
+
+class Builder {
+public:
+  Builder(const Scenario& scenario, const ProtocolOptions& options)
+      : geo_(std::make_shared<const Geometry>(scenario)), options_(options), n_(scenario.robots()) {
+  }
+
+  Protocol build();
+
+private:
+  void declare(tioa::Automaton& a);
+  void discover(tioa::Automaton& a);
+  void negotiate(tioa::Automaton& a);
+  void reserve_move_release(tioa::Automaton& a);
+
+  std::shared_ptr<const Geometry> geo_;
+  ProtocolOptions options_;
+  int n_;
+  Vars v_;
+};
+
+// ---- what the transitions share (all robots 1-based)
+
+// Zone_{.,r} as other robots see it (§5.3): the requested or reserved zone; the cell a
+// robot waits on before it starts (README, "Robots that have not started"); the Post zone
+// it keeps once its path is done (Definition 5).
+CellSet current_zone(const Geometry& g, const Vars& v, const State& s, int r) {
+  const Phase p = s[v.phase[r]];
+  if (p == Phase::idle)
+    return g.zone(r, 0).pre;
+  if (p == Phase::done)
+    return g.zone(r, g.last_chunk(r)).post;
+  return g.zone(r, s[v.chunk[r]]).all();
+}
+
+// Where robot r stands: the start of its chunk until it reserves, the cell reached while
+// it moves, the end of its path when done.
+Cell position_of(const Geometry& g, const tioa::VariableArray<Phase>& phase,
+                 const tioa::VariableArray<int>& chunk, const tioa::VariableArray<int>& step,
+                 const State& s, int r) {
+  const Phase p = s[phase[r]];
+  if (p == Phase::done)
+    return g.end(r);
+  if (p == Phase::moving)
+    return g.cells[r - 1][s[chunk[r]]][s[step[r]]];
+  return g.start(r, p == Phase::idle ? 0 : s[chunk[r]]);
+}
+
+Cell position_of(const Geometry& g, const Vars& v, const State& s, int r) {
+  return position_of(g, v.phase, v.chunk, v.step, s, r);
+}
+
+[[noreturn]] void throw_second_message(const char* kind, int from, int to) {
+  throw tioa::ModelError(std::string("path-reservation: a second ") + kind + " message from R" +
+                         std::to_string(from) + " to R" + std::to_string(to) +
+                         " while the first is in flight (the model holds one of each kind per "
+                         "pair)");
+}
+
+void send(State& s, const tioa::Variable<int>& slot, int content, const char* kind, int from,
+          int to) {
+  if (!s.is_bottom(slot))
+    throw_second_message(kind, from, to);
+  s[slot] = content;
+}
+
+// §3: Discover_i pings every robot closer than C (the control channel reaches them all).
+void start_discover(const Geometry& g, const Vars& v, State& s, int i) {
+  const Cell at = position_of(g, v, s, i);
+  int in_range = 0;
+  for (int j = 1; j <= static_cast<int>(g.scenario.paths.size()); ++j)
+    if (j != i && squared_distance(at, position_of(g, v, s, j)) < g.range_squared())
+      in_range |= bit(j);
+  s[v.phase[i]] = Phase::discovering;
+  s[v.pings[i]] = in_range;
+}
+
+// Clears what belongs to one chunk's negotiation (Algorithm 1 lines 2-3).
+void clear_negotiation(const Vars& v, State& s, int i, int n) {
+  s[v.group[i]] = 0;
+  s[v.heard[i]] = 0;
+  s[v.overlap[i]] = 0;
+  s[v.after_me[i]] = 0;
+  s[v.exchanged[i]] = 0;
+  s[v.preds[i]] = 0;
+  s[v.succs[i]] = 0;
+  s[v.released[i]] = 0;
+  for (int x = 1; x <= n; ++x) {
+    s[v.depend[i][x]] = 0;
+    s[v.depend_after_me[i][x]] = 0;
+    s.set_bottom(v.known_zone[i][x]);
+  }
+}
+
+// Sends Zone_i and Overlap_i, with the zone of every robot on the list.
+void send_list(const Vars& v, const ListMessages& m, State& s, int i, int j, const char* kind,
+               int n) {
+  send(s, m.chunk[i][j], s[v.chunk[i]], kind, i, j);
+  s[m.list[i][j]] = s[v.overlap[i]];
+  s[m.after_me[i][j]] = s[v.after_me[i]];
+  for (int x = 1; x <= n; ++x)
+    if (has(s[v.overlap[i]], x))
+      s[m.zone[i][j][x]] = static_cast<int>(s[v.known_zone[i][x]]);
+}
+
+ReceivedList take_list(const ListMessages& m, State& s, int j, int i, int n) {
+  ReceivedList r;
+  r.chunk = s[m.chunk[j][i]];
+  r.list = s[m.list[j][i]];
+  r.after_me = s[m.after_me[j][i]];
+  s.set_bottom(m.chunk[j][i]);
+  s[m.list[j][i]] = 0;
+  s[m.after_me[j][i]] = 0;
+  for (int x = 1; x <= n; ++x)
+    if (has(r.list, x)) {
+      r.zone[x] = s[m.zone[j][i][x]];
+      s.set_bottom(m.zone[j][i][x]);
+    }
+  return r;
+}
+
+// Algorithm 1 line 26: Depend_i gains R_j's pairs, and R_i learns the zones on its list.
+void accept_list(const Vars& v, State& s, int i, int j, const ReceivedList& r, int n) {
+  s[v.exchanged[i]] = s[v.exchanged[i]] | bit(j);
+  s[v.depend[i][j]] = r.list;
+  s[v.depend_after_me[i][j]] = r.after_me;
+  for (int x = 1; x <= n; ++x)
+    if (x != i && has(r.list, x) && s.is_bottom(v.known_zone[i][x]))
+      s[v.known_zone[i][x]] = r.zone[x];
+}
+
+void send_releases(const Vars& v, State& s, int i, int n) {
+  for (int j = 1; j <= n; ++j)
+    if (has(s[v.succs[i]], j))
+      send(s, v.release[i][j], s[v.chunk[i]], "release", i, j);
+}
+
+// Algorithms 2-4 on Depend_i (Algorithm 1 lines 27-30), with the zones R_i has learnt.
+void build_graphs(const Geometry& g, const Vars& v, const ProtocolOptions& options, State& s, int i,
+                  int n) {
+  std::array<int, max_robots + 1> zone_chunk{};
+  DependList depend;
+  depend.members = bit(i);
+  for (int x = 1; x <= n; ++x) {
+    depend.pairs[x - 1] = static_cast<RobotSet>(s[v.depend[i][x]]);
+    depend.after_me[x - 1] = static_cast<RobotSet>(s[v.depend_after_me[i][x]]);
+    if (depend.pairs[x - 1] != 0)
+      depend.members |= bit(x) | depend.pairs[x - 1];
+  }
+  for (int x = 1; x <= n; ++x) {
+    if (!has(static_cast<int>(depend.members), x))
+      continue;
+    if (x == i)
+      zone_chunk[x] = s[v.chunk[i]];
+    else if (s.is_bottom(v.known_zone[i][x]))
+      throw tioa::ModelError("path-reservation: R" + std::to_string(i) + " has R" +
+                             std::to_string(x) + " in Depend without its zone");
+    else
+      zone_chunk[x] = s[v.known_zone[i][x]];
+  }
+  ZoneRelations relations;
+  for (int x = 1; x <= n; ++x)
+    for (int y = 1; y <= n; ++y) {
+      if (x == y || !has(static_cast<int>(depend.members), x) ||
+          !has(static_cast<int>(depend.members), y))
+        continue;
+      const Zone& zx = g.zone(x, zone_chunk[x]);
+      const Zone& zy = g.zone(y, zone_chunk[y]);
+      const CellSet shared = zx.all() & zy.all();
+      // Definition 7, read as: the zones overlap, and only where neither robot waits
+      // (README, "Conflict").
+      if (shared != 0 && (shared & (zx.pre | zx.post | zy.pre | zy.post)) == 0)
+        relations.conflict[x - 1] |= static_cast<RobotSet>(bit(y));
+      if ((zx.all() & zy.pre) != 0) // Definition 8
+        relations.risk_pre[x - 1] |= static_cast<RobotSet>(bit(y));
+      if ((zx.all() & zy.post) != 0)
+        relations.risk_post[x - 1] |= static_cast<RobotSet>(bit(y));
+    }
+  // SortSC (§5.4, after the list of steps): the robot nearer to the shared cells goes
+  // first; equal distances go by identifier. `id` sorts by identifier alone.
+  const auto sort = [&](int x0, int y0) {
+    if (!options.sort_by_distance)
+      return x0 < y0;
+    const int x = x0 + 1, y = y0 + 1;
+    const CellSet shared = g.zone(x, zone_chunk[x]).all() & g.zone(y, zone_chunk[y]).all();
+    const int dx = g.plane.squared_distance(g.start(x, zone_chunk[x]), shared);
+    const int dy = g.plane.squared_distance(g.start(y, zone_chunk[y]), shared);
+    return dx != dy ? dx < dy : x < y;
+  };
+  const Precedence graph = resolve_precedence(depend, relations, sort);
+  if (graph.exception != Exception::none) {
+    s[v.exception[i]] = graph.exception; // raised to the upper layer, which stops R_i
+    s[v.phase[i]] = Phase::halted;
+    return;
+  }
+  s[v.preds[i]] = s[v.preds[i]] | static_cast<int>(graph.predecessors_of(i - 1));
+  s[v.succs[i]] = s[v.succs[i]] | static_cast<int>(graph.successors[i - 1]);
+  s[v.phase[i]] = Phase::waiting;
+  if (options.variant == Variant::release_before_reserve)
+    send_releases(v, s, i, n);
+}
+
+// Algorithm 1 lines 21-24 once msg_j has arrived from every member of G_i.
+void finish_negotiation(const Geometry& g, const Vars& v, const ProtocolOptions& options, State& s,
+                        int i, int n) {
+  s[v.phase[i]] = Phase::exchanging;
+  s[v.depend[i][i]] = s[v.overlap[i]];
+  s[v.depend_after_me[i][i]] = s[v.after_me[i]];
+  // The "AfterMe" senders gave their lists with their answer (README, "Overlap lists").
+  for (int j = 1; j <= n; ++j)
+    if (has(s[v.overlap[i]], j) && !has(s[v.exchanged[i]], j))
+      send_list(v, v.overlap_msg, s, i, j, "Overlap", n);
+  if (s[v.exchanged[i]] == s[v.overlap[i]])
+    build_graphs(g, v, options, s, i, n);
+}
+
+} // namespace
+
+void Builder::declare(tioa::Automaton& a) {
+  const auto robots = tioa::ids(1, static_cast<std::size_t>(n_));
+  const auto names = robot_names(n_);
+  int longest = 1;
+  for (const auto& per_robot : geo_->cells)
+    for (const auto& cells : per_robot)
+      longest = std::max(longest, static_cast<int>(cells.size()) - 1);
+  v_.phase = a.enumerations<Phase>(
+      "phase", robots,
+      {"idle", "discovering", "negotiating", "exchanging", "waiting", "moving", "done", "halted"},
+      Phase::idle);
+  v_.chunk = a.integers("chunk", robots, 0, max_chunks - 1, 0);
+  v_.step = a.integers("step", robots, 0, longest, 0);
+  v_.pings = a.subsets("pings", robots, names, 0);
+  v_.group = a.subsets("G", robots, names, 0);
+  v_.heard = a.subsets("heard", robots, names, 0);
+  v_.overlap = a.subsets("Overlap", robots, names, 0);
+  v_.after_me = a.subsets("AfterMe", robots, names, 0);
+  v_.exchanged = a.subsets("exchanged", robots, names, 0);
+  v_.preds = a.subsets("WLAfter_to", robots, names, 0);
+  v_.succs = a.subsets("WLAfter_from", robots, names, 0);
+  v_.released = a.subsets("released", robots, names, 0);
+  v_.exception = a.enumerations<Exception>(
+      "exception", robots,
+      {"none", "deadlock1", "deadlock2", "deadlock3", "deadlock4", "risk-cycle"}, Exception::none);
+  // Index 0 is unused in the per-pair arrays so that v.req[i][j] reads as the paper.
+  const auto per_robot = [&](auto declare_one) {
+    std::vector<decltype(declare_one(1))> out(1);
+    for (int i = 1; i <= n_; ++i)
+      out.push_back(declare_one(i));
+    out[0] = out[1];
+    return out;
+  };
+  v_.depend = per_robot([&](int i) { return a.subsets(name2("Depend", i), robots, names, 0); });
+  v_.depend_after_me =
+      per_robot([&](int i) { return a.subsets(name2("Depend_AfterMe", i), robots, names, 0); });
+  v_.known_zone = per_robot([&](int i) {
+    tioa::VariableArray<int> out;
+    out.first = 1;
+    for (int x = 1; x <= n_; ++x)
+      out.items.push_back(a.optional_integer(name2(name2("zone", i), x), 0, max_chunks - 1));
+    return out;
+  });
+  const auto channel = [&](const std::string& kind) {
+    return per_robot([&](int i) {
+      tioa::VariableArray<int> out;
+      out.first = 1;
+      for (int j = 1; j <= n_; ++j)
+        out.items.push_back(a.optional_integer(name2(name2(kind, i), j), 0, max_chunks - 1));
+      return out;
+    });
+  };
+  v_.req = channel("net.request");
+  v_.ok = per_robot([&](int i) { return a.booleans(name2("net.OK", i), robots, false); });
+  v_.release = channel("net.release");
+  const auto list_messages = [&](const std::string& kind) {
+    ListMessages m;
+    m.chunk = channel(kind);
+    m.list =
+        per_robot([&](int i) { return a.subsets(name2(kind + ".list", i), robots, names, 0); });
+    m.after_me =
+        per_robot([&](int i) { return a.subsets(name2(kind + ".AfterMe", i), robots, names, 0); });
+    m.zone.resize(static_cast<std::size_t>(n_) + 1);
+    for (int i = 1; i <= n_; ++i) {
+      m.zone[i].resize(static_cast<std::size_t>(n_) + 1);
+      for (int j = 1; j <= n_; ++j) {
+        m.zone[i][j].first = 1;
+        for (int x = 1; x <= n_; ++x)
+          m.zone[i][j].items.push_back(
+              a.optional_integer(name2(name2(name2(kind + ".zone", i), j), x), 0, max_chunks - 1));
+      }
+    }
+    return m;
+  };
+  v_.after_me_msg = list_messages("net.AfterMe");
+  v_.overlap_msg = list_messages("net.Overlap");
+}
+
+void Builder::discover(tioa::Automaton& a) {
+  const auto geo = geo_;
+  const Vars v = v_;
+  const int n = n_;
+  const ProtocolOptions options = options_;
+  const tioa::ParamRange robot_i{"i", 1, n}, robot_j{"j", 1, n};
+  // A robot joins: it asks for its first chunk (every order of joining is explored, so
+  // late joiners race the negotiations of the others).
+  a.internal("start", {robot_i})
+      .pre([=](const State& s, const Params& p) { return s[v.phase[p[0]]] == Phase::idle; })
+      .eff([=](State& s, const Params& p) { start_discover(*geo, v, s, p[0]); });
+  // §3, Property 1: Discover_i reaches R_j, which replies on the control channel with
+  // whether its zone meets Cir_i(pos_i, C/2) (§5.3, G_i). The reply's content is fixed
+  // here; Discover_i ends only when every reply is in (discover_end), which is what
+  // waiting Δ gives when every reply arrives within Δ (README, "Discover").
+  a.internal("discover_reply", {robot_i, robot_j})
+      .pre([=](const State& s, const Params& p) {
+        return s[v.phase[p[0]]] == Phase::discovering && has(s[v.pings[p[0]]], p[1]);
+      })
+      .eff([=](State& s, const Params& p) {
+        const int i = p[0], j = p[1];
+        s[v.pings[i]] = s[v.pings[i]] & ~bit(j);
+        const CellSet reach = geo->plane.disk(position_of(*geo, v, s, i), geo->range_squared());
+        if ((current_zone(*geo, v, s, j) & reach) == 0)
+          return;
+        s[v.group[i]] = s[v.group[i]] | bit(j);
+        // The reply names the zone it is about (README, "Which message is msg_j").
+        if (s[v.phase[j]] != Phase::idle && s[v.phase[j]] != Phase::done)
+          s[v.known_zone[i][j]] = s[v.chunk[j]];
+      });
+  // Algorithm 1 lines 1 and 11: G_i is determined; request(Zone_i) to every member.
+  a.internal("discover_end", {robot_i})
+      .pre([=](const State& s, const Params& p) {
+        return s[v.phase[p[0]]] == Phase::discovering && s[v.pings[p[0]]] == 0;
+      })
+      .eff([=](State& s, const Params& p) {
+        const int i = p[0];
+        s[v.phase[i]] = Phase::negotiating;
+        for (int j = 1; j <= n; ++j)
+          if (has(s[v.group[i]], j))
+            send(s, v.req[i][j], s[v.chunk[i]], "request", i, j);
+        if (s[v.group[i]] == 0)
+          finish_negotiation(*geo, v, options, s, i, n);
+      });
+}
+
+void Builder::negotiate(tioa::Automaton& a) {
+  const auto geo = geo_;
+  const Vars v = v_;
+  const int n = n_;
+  const ProtocolOptions options = options_;
+  const tioa::ParamRange from{"from", 1, n}, to{"to", 1, n};
+  // msg_j of Algorithm 1 line 12 from a member of G_i; once all are in, lines 21-24.
+  const auto heard_from = [=](State& s, int i, int j) {
+    s[v.heard[i]] = s[v.heard[i]] | bit(j);
+    if (s[v.heard[i]] == s[v.group[i]])
+      finish_negotiation(*geo, v, options, s, i, n);
+  };
+  const auto expecting = [=](const State& s, int i, int j) {
+    return s[v.phase[i]] == Phase::negotiating && has(s[v.group[i]], j) && !has(s[v.heard[i]], j);
+  };
+  // A request is msg_j only for the zone R_j named when it replied to Discover_i (or any
+  // zone when R_j had none yet); a request for a later zone goes to the Reply thread.
+  const auto request_is_msg = [=](const State& s, int i, int j, int zone_chunk) {
+    return expecting(s, i, j) &&
+           (s.is_bottom(v.known_zone[i][j]) || s[v.known_zone[i][j]] == zone_chunk);
+  };
+  // request(Zone_j) reaches R_i. From a member of G_i whose msg is due, it is that msg
+  // (the G2 case: lines 18-19). Otherwise the Reply thread answers (lines 5-10): "AfterMe"
+  // when the zones overlap, "OK" when not (README, "AfterMe or OK"). A robot reads
+  // requests once it knows G_i: one that arrives earlier waits in the network (README,
+  // "Requests before G_i").
+  a.internal("receive_request", {from, to})
+      .pre([=](const State& s, const Params& p) {
+        const Phase at = s[v.phase[p[1]]];
+        return !s.is_bottom(v.req[p[0]][p[1]]) && at != Phase::idle && at != Phase::discovering;
+      })
+      .eff([=](State& s, const Params& p) {
+        const int j = p[0], i = p[1];
+        const int zone_chunk = s[v.req[j][i]];
+        s.set_bottom(v.req[j][i]);
+        const CellSet zone_j = geo->zone(j, zone_chunk).all();
+        if (request_is_msg(s, i, j, zone_chunk)) {
+          s[v.known_zone[i][j]] = zone_chunk;
+          if ((zone_j & geo->zone(i, s[v.chunk[i]]).all()) != 0)
+            s[v.overlap[i]] = s[v.overlap[i]] | bit(j);
+          heard_from(s, i, j);
+        } else if ((zone_j & current_zone(*geo, v, s, i)) != 0) {
+          send_list(v, v.after_me_msg, s, i, j, "AfterMe", n);
+          s[v.succs[i]] = s[v.succs[i]] | bit(j);
+        } else {
+          if (s[v.ok[i][j]])
+            throw_second_message("OK", i, j);
+          s[v.ok[i][j]] = true;
+        }
+      });
+  // "AfterMe" + Zone_j from a member of G1_i (lines 13-16), with Overlap_j; "OK" (§5.4).
+  // An answer R_i no longer waits for is dropped (README, "Late answers").
+  a.internal("receive_AfterMe", {from, to})
+      .pre([=](const State& s, const Params& p) {
+        return !s.is_bottom(v.after_me_msg.chunk[p[0]][p[1]]);
+      })
+      .eff([=](State& s, const Params& p) {
+        const int j = p[0], i = p[1];
+        const ReceivedList answer = take_list(v.after_me_msg, s, j, i, n);
+        if (!expecting(s, i, j))
+          return;
+        s[v.known_zone[i][j]] = answer.chunk;
+        s[v.overlap[i]] = s[v.overlap[i]] | bit(j);
+        s[v.after_me[i]] = s[v.after_me[i]] | bit(j);
+        s[v.preds[i]] = s[v.preds[i]] | bit(j);
+        accept_list(v, s, i, j, answer, n);
+        heard_from(s, i, j);
+      });
+  a.internal("receive_OK", {from, to})
+      .pre([=](const State& s, const Params& p) { return s[v.ok[p[0]][p[1]]]; })
+      .eff([=](State& s, const Params& p) {
+        const int j = p[0], i = p[1];
+        s[v.ok[j][i]] = false;
+        if (expecting(s, i, j))
+          heard_from(s, i, j);
+      });
+  // Overlap_j reaches R_i (lines 25-26); with every list in, Algorithms 2-4 (lines 27-30).
+  // R_i reads it once it knows its own Overlap_i; a list it does not wait for, or one for
+  // another zone of R_j than the one R_j requested, is dropped (README, "Overlap lists").
+  a.internal("receive_Overlap", {from, to})
+      .pre([=](const State& s, const Params& p) {
+        const Phase at = s[v.phase[p[1]]];
+        return !s.is_bottom(v.overlap_msg.chunk[p[0]][p[1]]) && at != Phase::discovering &&
+               at != Phase::negotiating;
+      })
+      .eff([=](State& s, const Params& p) {
+        const int j = p[0], i = p[1];
+        const ReceivedList list = take_list(v.overlap_msg, s, j, i, n);
+        const bool awaited = s[v.phase[i]] == Phase::exchanging && has(s[v.overlap[i]], j) &&
+                             !has(s[v.exchanged[i]], j) && !s.is_bottom(v.known_zone[i][j]) &&
+                             s[v.known_zone[i][j]] == list.chunk;
+        if (!awaited)
+          return;
+        accept_list(v, s, i, j, list, n);
+        if (s[v.exchanged[i]] == s[v.overlap[i]])
+          build_graphs(*geo, v, options, s, i, n);
+      });
+  // Algorithm 1 line 31: a release message from a predecessor.
+  a.internal("receive_release", {from, to})
+      .pre([=](const State& s, const Params& p) { return !s.is_bottom(v.release[p[0]][p[1]]); })
+      .eff([=](State& s, const Params& p) {
+        const int j = p[0], i = p[1];
+        s.set_bottom(v.release[j][i]);
+        s[v.released[i]] = s[v.released[i]] | bit(j);
+      });
+}
+
+void Builder::reserve_move_release(tioa::Automaton& a) {
+  const auto geo = geo_;
+  const Vars v = v_;
+  const int n = n_;
+  const ProtocolOptions options = options_;
+  const tioa::ParamRange robot_i{"i", 1, n};
+  // Lines 31-33: every predecessor has released; R_i owns Zone_i.
+  a.internal("reserve", {robot_i})
+      .pre([=](const State& s, const Params& p) {
+        const int i = p[0];
+        return s[v.phase[i]] == Phase::waiting && (s[v.preds[i]] & ~s[v.released[i]]) == 0;
+      })
+      .eff([=](State& s, const Params& p) {
+        s[v.phase[p[0]]] = Phase::moving;
+        s[v.step[p[0]]] = 0;
+      });
+  // Line 34: one cell further along the chunk. On its last cell the robot releases
+  // (lines 35-37; it keeps Post(Zone), Definition 5) and starts the next chunk's Discover.
+  a.internal("move", {robot_i})
+      .pre([=](const State& s, const Params& p) { return s[v.phase[p[0]]] == Phase::moving; })
+      .eff([=](State& s, const Params& p) {
+        const int i = p[0], k = s[v.chunk[i]];
+        s[v.step[i]] = s[v.step[i]] + 1;
+        if (s[v.step[i]] + 1 < static_cast<int>(geo->cells[i - 1][k].size()))
+          return;
+        if (options.variant == Variant::paper)
+          send_releases(v, s, i, n);
+        clear_negotiation(v, s, i, n);
+        s[v.step[i]] = 0;
+        if (k == geo->last_chunk(i)) {
+          s[v.phase[i]] = Phase::done;
+          return;
+        }
+        s[v.chunk[i]] = k + 1;
+        start_discover(*geo, v, s, i);
+      });
+}
+
+Protocol Builder::build() {
+  Protocol out;
+  out.geometry = geo_;
+  out.n = n_;
+  declare(out.system);
+  discover(out.system);
+  negotiate(out.system);
+  reserve_move_release(out.system);
+  out.phase = v_.phase;
+  out.chunk = v_.chunk;
+  out.step = v_.step;
+  out.release = v_.release;
+  return out;
+}
+
+Cell Protocol::position(const State& s, int robot) const {
+  return position_of(*geometry, phase, chunk, step, s, robot);
+}
+
+CellSet Protocol::owned(const State& s, int robot) const {
+  const Phase p = s[phase[robot]];
+  if (p == Phase::done)
+    return geometry->zone(robot, geometry->last_chunk(robot)).post;
+  const int k = s[chunk[robot]];
+  if (p == Phase::moving)
+    return geometry->zone(robot, k).all();
+  // Not moving: the cell it waits on, the Post zone of the previous chunk (this chunk's
+  // Pre); before its first chunk, its start cell (README, "Robots that have not started").
+  return geometry->zone(robot, p == Phase::idle ? 0 : k).pre;
+}
+
+bool Protocol::finished(const State& s, int robot) const {
+  const Phase p = s[phase[robot]];
+  return p == Phase::done || p == Phase::halted;
+}
+
+Protocol build_protocol(const Scenario& scenario, const ProtocolOptions& options) {
+  if (auto why = check_scenario(scenario))
+    throw tioa::ModelError("scenario '" + scenario.name + "': " + *why);
+  return Builder(scenario, options).build();
+}
+
+} // namespace path_reservation
