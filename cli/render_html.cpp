@@ -3,6 +3,7 @@
 #include <string>
 
 #include "cli/html_text.hpp"
+#include "cli/render_path_reservation.hpp"
 #include "cli/render_table.hpp"
 #include "cli/render_vlayer.hpp"
 
@@ -33,6 +34,19 @@ text.robot-label { text-anchor: middle; fill: #fff; font-weight: bold; }
 line.to-target { stroke: #ef6c00; stroke-dasharray: 4 3; } path.target { stroke: #ef6c00; stroke-width: 2; }
 line.msg { stroke-width: 2; } line.cn-update { stroke: #6a1b9a; } line.vn-update { stroke: #00838f; }
 line.target-update { stroke: #c62828; } li.message { color: #6a1b9a; }
+svg.path-reservation { background: #fff; }
+rect.plane-cell { fill: #fafafa; stroke: #bbb; } text.axis { fill: #888; text-anchor: middle; }
+polyline.path { stroke-width: 1.5; opacity: 0.8; }
+rect.requested { stroke-width: 1.5; stroke-dasharray: 4 3; }
+text.zone-mark { font-size: 9px; } text.zone-mark.post { text-anchor: end; }
+rect.collision { fill: none; stroke: #c62828; stroke-width: 2.5; }
+circle.robot-disc { stroke: #222; } circle.halted-ring { fill: none; stroke: #c62828; stroke-width: 3; }
+text.exception-label { fill: #c62828; text-anchor: middle; font-weight: bold; }
+text.msg-label { font-size: 9px; text-anchor: middle; }
+text.msg-label, text.exception-label, text.zone-mark { paint-order: stroke; stroke: #fff; stroke-width: 3px; } li.collision { color: #c62828; font-weight: bold; }
+table.robots { border-collapse: collapse; margin-top: 0.4em; }
+table.robots td, table.robots th { border: 1px solid #ddd; padding: 0.15em 0.6em; text-align: left; }
+span.swatch { display: inline-block; width: 0.8em; height: 0.8em; border-radius: 50%; }
 details { margin-top: 0.5em; }
 )";
 
@@ -94,9 +108,14 @@ void write_frame(std::ostream& out, const Json& report, const Json& trace,
         << ": the loop repeats forever)</span>";
   out << "</h3>\n";
   const Json* previous = index == 0 ? nullptr : &steps[index - 1]["state"];
-  if (report["model"] == "vlayer-mc") {
-    write_vlayer_picture(out, report["params"], step["state"],
-                         trace_id + "-" + std::to_string(index));
+  const std::string picture_id = trace_id + "-" + std::to_string(index);
+  const bool vlayer = report["model"] == "vlayer-mc";
+  const bool path_reservation = report["model"] == "path-reservation";
+  if (vlayer || path_reservation) {
+    if (vlayer)
+      write_vlayer_picture(out, report["params"], step["state"], picture_id);
+    else
+      write_path_reservation_picture(out, report["params"], step["state"], picture_id);
     out << "<details><summary>every variable</summary>\n";
     write_state_table(out, step["state"], previous);
     out << "</details>\n";

@@ -9,6 +9,7 @@ add_executable(cli_html_vlayer_page
   html_vlayer_page.cpp
   ${PROJECT_SOURCE_DIR}/cli/model_run.cpp
   ${PROJECT_SOURCE_DIR}/cli/render_html.cpp
+  ${PROJECT_SOURCE_DIR}/cli/render_path_reservation.cpp
   ${PROJECT_SOURCE_DIR}/cli/render_table.cpp
   ${PROJECT_SOURCE_DIR}/cli/render_vlayer.cpp
   ${PROJECT_SOURCE_DIR}/cli/report_json.cpp
@@ -88,6 +89,47 @@ foreach(variant IN ITEMS "" _chromium)
                        "cn-update ⟨0, \\(0,2\\)⟩ in VBcast, age 0"
                        "step 5: after <code>vrcv_cn_update_0\\(0,10\\)</code>, t = 0"
                        "VSA 0: clock 0, M = {0 at \\(0,2\\)}</li>")
+endforeach()
+
+# path-reservation: each frame a picture of the plane (cli/render_path_reservation.cpp).
+# The variant that releases before it reserves lets the two robots of `crossing` meet on
+# cell (2,2); the frame count is left open while the model is young. On `cycle` the paper's
+# protocol ends with every robot halted by a risk-cycle exception (a witness, exit 0).
+foreach(variant IN ITEMS "" _chromium)
+  if(variant STREQUAL "")
+    set(chromium "")
+  else()
+    set(chromium CHROMIUM)
+  endif()
+  html_test(html_path_reservation${variant} EXIT 1
+            PAGE ${html_out}/path_reservation${variant}.html ${chromium}
+            COMMAND ${tioa_check} check path-reservation
+                    -p scenario=crossing,variant=release-before-reserve --prop no-collision
+                    --threads 1 --html ${html_out}/path_reservation${variant}.html
+            PAGE_REGEX "<title>tioa-check: path-reservation \\(scenario=crossing, sort=distance, variant=release-before-reserve\\)</title>"
+                       "<b>no-collision</b> \\(invariant\\): <span class=\"verdict-violated\">violated</span>"
+                       "<svg [^>]*class=\"path-reservation\""
+                       "<polyline class=\"path r1\"" "<polyline class=\"path r2\""
+                       "<circle class=\"robot-disc r1\"" "<text class=\"robot-label\"[^>]*>R2</text>"
+                       "<rect class=\"owned r1\"" "<rect class=\"requested r2\""
+                       "<text class=\"zone-mark pre\"" "<text class=\"zone-mark post\""
+                       "<line class=\"msg request\"" "request R1 → R2 \\(zone of chunk 0\\)</li>"
+                       "<line class=\"msg release\"" "release R[12] → R[12] \\(zone of chunk 0\\)</li>"
+                       "<rect class=\"collision\"" "collision: R1 and R2 on cell \\(2,2\\)</li>"
+                       "<table class=\"robots\">"
+                       "R1</td><td>negotiating</td><td>0</td><td>\\(0,2\\)</td><td>{R2}</td>"
+                       "<summary>every variable</summary>")
+  html_test(html_path_reservation_halted${variant} EXIT 0
+            PAGE ${html_out}/path_reservation_halted${variant}.html ${chromium}
+            COMMAND ${tioa_check} check path-reservation -p scenario=cycle --prop progress
+                    --threads 1 --html ${html_out}/path_reservation_halted${variant}.html
+            PAGE_REGEX "<b>progress</b> \\(stabilisation\\): <span class=\"verdict-holds\">"
+                       "<svg [^>]*class=\"path-reservation\""
+                       "<circle class=\"halted-ring\"" "<circle class=\"robot-disc r3 halted\""
+                       "<text class=\"exception-label\"[^>]*>risk-cycle</text>"
+                       "<td>halted</td><td>0</td><td>\\(1,1\\)</td>"
+                       "<line class=\"msg Overlap\""
+                       "Overlap R[123] → R[123] \\(zone of chunk 0, list {R[123], R[123]}\\)</li>")
 endforeach()
 
 # Every model has a page: the generic table for Fischer (an invariant counterexample), a
