@@ -11,6 +11,7 @@ struct PathGeometry {
   Scenario scenario;
   std::vector<std::vector<std::vector<Cell>>> cells; // [robot - 1][chunk]
   std::vector<std::vector<Zone>> zones;              // [robot - 1][chunk]
+  std::vector<CellSet> reservation_disk;             // [cell]: Cir(cell, C/2), Definition 4
 
   explicit PathGeometry(const Scenario& s) : plane(s.width, s.height), scenario(s) {
     for (int r = 0; r < s.robots(); ++r) {
@@ -21,6 +22,8 @@ struct PathGeometry {
         zones[r].push_back(plane.zone(s.paths[r][k], s.paths[r][k + 1]));
       }
     }
+    for (int c = 0; c < plane.cells(); ++c)
+      reservation_disk.push_back(plane.disk(plane.cell(c), s.range * s.range));
   }
   const Zone& zone(int robot, int chunk) const { return zones[robot - 1][chunk]; }
   int last_chunk(int robot) const { return scenario.chunks(robot - 1) - 1; }

@@ -384,7 +384,7 @@ void Builder::discover(tioa::Automaton& a) {
       .eff([=](State& s, const Params& p) {
         const int i = p[0], j = p[1];
         s[v.pings[i]] = s[v.pings[i]] & ~bit(j);
-        const CellSet reach = geo->plane.disk(position_of(*geo, v, s, i), geo->range_squared());
+        const CellSet reach = geo->reservation_disk[geo->plane.index(position_of(*geo, v, s, i))];
         if ((current_zone(*geo, v, s, j) & reach) == 0)
           return;
         s[v.group[i]] = s[v.group[i]] | bit(j);
