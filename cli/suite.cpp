@@ -24,7 +24,8 @@ struct SuiteRow {
   const models::ModelDefinition* definition = nullptr;
   const models::SuiteEntry* entry = nullptr;
   models::ParamValues values;
-  ModelRun run; // one result: this entry's property
+  ModelRun run;             // one result: this entry's property
+  std::string shown_params; // the table's column: what the entry sets (see shown_params)
 
   const checker::PropertyResult& result() const { return run.results.front(); }
   bool as_expected() const { return result().verdict == entry->expected; }
@@ -33,6 +34,17 @@ struct SuiteRow {
 struct Columns {
   std::size_t model = 5, params = 6, property = 8;
 };
+
+// The table names only the parameters the entry sets; the others are at their defaults
+// (`tioa-check list`), so a row still reads as a command line that repeats it. The JSON
+// and JUnit reports name every parameter.
+std::string shown_params(const OrderedParams& all, const models::ParamValues& set) {
+  OrderedParams shown;
+  for (const auto& param : all)
+    if (set.count(param.first) != 0)
+      shown.push_back(param);
+  return shown.empty() ? "(defaults)" : format_params(shown);
+}
 
 void print_header(const Columns& c) {
   std::cout << fmt::format(
@@ -45,9 +57,9 @@ void print_row(const Columns& c, const SuiteRow& row) {
   const checker::PropertyResult& r = row.result();
   std::cout << fmt::format(
       "{:<{}}  {:<{}}  {:<{}}  {:<10}  {:<10}  {:>10}  {:>12}  {:>14}  {:>8.3f}{}\n", row.run.model,
-      c.model, format_params(row.run.params), c.params, r.name, c.property,
-      checker::to_string(r.verdict), checker::to_string(row.entry->expected), r.states, r.edges,
-      format_worst_time(r), r.seconds, row.as_expected() ? "" : "   <- NOT AS EXPECTED");
+      c.model, row.shown_params, c.params, r.name, c.property, checker::to_string(r.verdict),
+      checker::to_string(row.entry->expected), r.states, r.edges, format_worst_time(r), r.seconds,
+      row.as_expected() ? "" : "   <- NOT AS EXPECTED");
 }
 
 std::vector<JunitSuite> junit_suites(const std::vector<SuiteRow>& rows) {
@@ -103,7 +115,8 @@ int command_suite(const RunSettings& settings, const std::vector<std::string>& o
       row.run.model = def.name;
       row.run.params = ordered_params(def, row.values);
       columns.model = std::max(columns.model, def.name.size());
-      columns.params = std::max(columns.params, format_params(row.run.params).size());
+      row.shown_params = shown_params(row.run.params, entry.params);
+      columns.params = std::max(columns.params, row.shown_params.size());
       columns.property = std::max(columns.property, entry.property.size());
       rows.push_back(std::move(row));
     }

@@ -39,11 +39,13 @@ Zone Plane::zone(Cell from, Cell to) const {
   return z;
 }
 
-CellSet Plane::disk(Cell centre, int squared_radius_times_4) const {
+CellSet Plane::disk(Cell centre, int squared_radius_times_4, DiskEdge edge) const {
   CellSet out = 0;
-  for (int i = 0; i < cells(); ++i)
-    if (4 * path_reservation::squared_distance(centre, cell(i)) <= squared_radius_times_4)
+  for (int i = 0; i < cells(); ++i) {
+    const int d4 = 4 * path_reservation::squared_distance(centre, cell(i));
+    if (d4 < squared_radius_times_4 || (d4 == squared_radius_times_4 && edge == DiskEdge::closed))
       out |= CellSet{1} << i;
+  }
   return out;
 }
 

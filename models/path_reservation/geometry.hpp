@@ -20,6 +20,11 @@ struct Cell {
   bool operator==(const Cell&) const = default;
 };
 
+// Definition 4 says a zone lies within Cir(pos, C/2), "a radius equal at most to half the
+// transmission range": a closed disk. Read as an open disk, two robots that can reach a
+// common cell are always closer than C (README, "Ranges", finding P3).
+enum class DiskEdge { closed, open };
+
 struct Zone {
   CellSet pre = 0, motion = 0, post = 0;
   CellSet all() const { return pre | motion | post; }
@@ -41,9 +46,9 @@ public:
   // throws std::invalid_argument unless the run is straight (|dx| = |dy| or one is 0).
   std::vector<Cell> chunk_cells(Cell from, Cell to) const;
   Zone zone(Cell from, Cell to) const;
-  // Cir(centre, r): the cells whose centres are at distance <= r from centre's
-  // (Definition 4 with r = C/2: twice the squared distance compared with C^2 / 2).
-  CellSet disk(Cell centre, int squared_radius_times_4) const;
+  // Cir(centre, r): the cells whose centres are at distance <= r from centre's (< r when
+  // open). Definition 4 has r = C/2, so the argument is (2r)^2 = C^2, kept whole.
+  CellSet disk(Cell centre, int squared_radius_times_4, DiskEdge edge = DiskEdge::closed) const;
   // The least squared distance from `from` to a cell of `area` (the sorting criterion).
   int squared_distance(Cell from, CellSet area) const;
 

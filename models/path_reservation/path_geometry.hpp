@@ -13,7 +13,8 @@ struct PathGeometry {
   std::vector<std::vector<Zone>> zones;              // [robot - 1][chunk]
   std::vector<CellSet> reservation_disk;             // [cell]: Cir(cell, C/2), Definition 4
 
-  explicit PathGeometry(const Scenario& s) : plane(s.width, s.height), scenario(s) {
+  explicit PathGeometry(const Scenario& s, DiskEdge edge = DiskEdge::closed)
+      : plane(s.width, s.height), scenario(s) {
     for (int r = 0; r < s.robots(); ++r) {
       cells.emplace_back();
       zones.emplace_back();
@@ -23,7 +24,7 @@ struct PathGeometry {
       }
     }
     for (int c = 0; c < plane.cells(); ++c)
-      reservation_disk.push_back(plane.disk(plane.cell(c), s.range * s.range));
+      reservation_disk.push_back(plane.disk(plane.cell(c), s.range * s.range, edge));
   }
   const Zone& zone(int robot, int chunk) const { return zones[robot - 1][chunk]; }
   int last_chunk(int robot) const { return scenario.chunks(robot - 1) - 1; }

@@ -67,6 +67,14 @@ Protocol path_reservation_protocol(const ParamValues& params) {
   options.variant = choice(params, "variant") == "paper"
                         ? path_reservation::Variant::paper
                         : path_reservation::Variant::release_before_reserve;
+  options.msg_rule = choice(params, "msg_rule") == "discover-zone"
+                         ? path_reservation::MsgRule::discover_zone
+                         : path_reservation::MsgRule::any_zone;
+  options.early_requests = choice(params, "early_requests") == "wait"
+                               ? path_reservation::EarlyRequests::wait
+                               : path_reservation::EarlyRequests::answer;
+  options.disk = choice(params, "disk") == "closed" ? path_reservation::DiskEdge::closed
+                                                    : path_reservation::DiskEdge::open;
   return path_reservation::build_protocol(
       path_reservation::find_scenario(choice(params, "scenario")), options);
 }
@@ -83,7 +91,16 @@ ModelDefinition path_reservation_definition() {
                         "id, or id alone"),
       ParamSpec::choice("variant", "paper", {"paper", "release-before-reserve"},
                         "the protocol as written, or a broken one that releases before it "
-                        "reserves (shows the safety checks failing)")};
+                        "reserves (shows the safety checks failing)"),
+      ParamSpec::choice("msg_rule", "discover-zone", {"discover-zone", "any-zone"},
+                        "which request of R_j is msg_j: one for the zone R_j named in its "
+                        "Discover reply, or any (README, findings P1/P2)"),
+      ParamSpec::choice("early_requests", "wait", {"wait", "answer"},
+                        "a request that arrives before G_i is known waits for it, or the "
+                        "Reply thread answers it at once"),
+      ParamSpec::choice("disk", "closed", {"closed", "open"},
+                        "Definition 4's Cir(pos, C/2) as a closed or an open disk (finding "
+                        "P3)")};
   d.properties = {{"mutual-exclusion", "Property 2: no point is owned by two robots"},
                   {"integrity", "Property 3: a robot releases a zone only after reserving it"},
                   {"no-collision", "no two robots ever occupy the same cell"},
@@ -131,15 +148,15 @@ ModelDefinition path_reservation_definition() {
     return m;
   };
   // Every scenario but pinwheel (1.1 million states, tests/models/path_reservation/),
-  // each property; the verdicts of head-on and late-joiner are findings P1 and P2 (README).
+  // each property; the verdicts of head-on and late-joiner are findings P1 and P2, those
+  // of range-edge finding P3 (README).
   using checker::Verdict;
   const auto entry = [](const char* scenario, const char* property, Verdict expected,
                         const char* variant = "paper") {
-    return SuiteEntry{{{"scenario", ParamValue::choice(scenario)},
-                       {"sort", ParamValue::choice("distance")},
-                       {"variant", ParamValue::choice(variant)}},
-                      property,
-                      expected};
+    ParamValues params{{"scenario", ParamValue::choice(scenario)}};
+    if (std::string(variant) != "paper")
+      params.emplace("variant", ParamValue::choice(variant));
+    return SuiteEntry{params, property, expected};
   };
   for (const char* scenario : {"crossing", "head-on", "convoy", "cycle", "late-joiner"})
     for (const char* property : {"mutual-exclusion", "integrity", "no-collision"})
@@ -148,6 +165,10 @@ ModelDefinition path_reservation_definition() {
     d.suite.push_back(entry(scenario, "progress", Verdict::holds));
   for (const char* scenario : {"head-on", "late-joiner"})
     d.suite.push_back(entry(scenario, "progress", Verdict::violated));
+  // Finding P3: Definition 4's closed disk lets two robots that cannot hear each other
+  // reserve a common cell.
+  d.suite.push_back(entry("range-edge", "mutual-exclusion", Verdict::violated));
+  d.suite.push_back(entry("range-edge", "no-collision", Verdict::violated));
   d.suite.push_back(
       entry("crossing", "mutual-exclusion", Verdict::violated, "release-before-reserve"));
   d.suite.push_back(entry("crossing", "integrity", Verdict::violated, "release-before-reserve"));

@@ -70,8 +70,8 @@ struct Vars {
 class Builder {
 public:
   Builder(const Scenario& scenario, const ProtocolOptions& options)
-      : geo_(std::make_shared<const Geometry>(scenario)), options_(options), n_(scenario.robots()) {
-  }
+      : geo_(std::make_shared<const Geometry>(scenario, options.disk)), options_(options),
+        n_(scenario.robots()) {}
 
   Protocol build();
 
@@ -425,19 +425,23 @@ void Builder::negotiate(tioa::Automaton& a) {
   };
   // A request is msg_j only for the zone R_j named when it replied to Discover_i (or any
   // zone when R_j had none yet); a request for a later zone goes to the Reply thread.
+  // With MsgRule::any_zone, every request from an awaited R_j is msg_j.
   const auto request_is_msg = [=](const State& s, int i, int j, int zone_chunk) {
     return expecting(s, i, j) &&
-           (s.is_bottom(v.known_zone[i][j]) || s[v.known_zone[i][j]] == zone_chunk);
+           (options.msg_rule == MsgRule::any_zone || s.is_bottom(v.known_zone[i][j]) ||
+            s[v.known_zone[i][j]] == zone_chunk);
   };
   // request(Zone_j) reaches R_i. From a member of G_i whose msg is due, it is that msg
   // (the G2 case: lines 18-19). Otherwise the Reply thread answers (lines 5-10): "AfterMe"
   // when the zones overlap, "OK" when not (README, "AfterMe or OK"). A robot reads
   // requests once it knows G_i: one that arrives earlier waits in the network (README,
-  // "Requests before G_i").
+  // "Requests before G_i"), unless EarlyRequests::answer lets the Reply thread answer it.
   a.internal("receive_request", {from, to})
       .pre([=](const State& s, const Params& p) {
         const Phase at = s[v.phase[p[1]]];
-        return !s.is_bottom(v.req[p[0]][p[1]]) && at != Phase::idle && at != Phase::discovering;
+        return !s.is_bottom(v.req[p[0]][p[1]]) &&
+               (options.early_requests == EarlyRequests::answer ||
+                (at != Phase::idle && at != Phase::discovering));
       })
       .eff([=](State& s, const Params& p) {
         const int j = p[0], i = p[1];
@@ -590,7 +594,7 @@ bool Protocol::finished(const State& s, int robot) const {
 }
 
 Protocol build_protocol(const Scenario& scenario, const ProtocolOptions& options) {
-  if (auto why = check_scenario(scenario))
+  if (auto why = check_scenario(scenario, options.disk))
     throw tioa::ModelError("scenario '" + scenario.name + "': " + *why);
   return Builder(scenario, options).build();
 }

@@ -26,9 +26,21 @@ enum class Phase { idle, discovering, negotiating, exchanging, waiting, moving, 
 // safety checks failing.
 enum class Variant { paper, release_before_reserve };
 
+// The two readings marked (†) in the README, each with its alternative, so a user can
+// see whether findings P1 and P2 survive another reading of the text.
+//  - Which request of R_j is msg_j (§5.4, the G1/G2 split): one for the zone R_j named in
+//    its Discover reply (`discover_zone`), or any request of R_j (`any_zone`).
+//  - A request that reaches R_i before it knows G_i: it waits until G_i is known (`wait`),
+//    or the Reply thread answers it at once (`answer`).
+enum class MsgRule { discover_zone, any_zone };
+enum class EarlyRequests { wait, answer };
+
 struct ProtocolOptions {
   bool sort_by_distance = true; // SortSC (§5.4): distance to the shared cells, then id
   Variant variant = Variant::paper;
+  MsgRule msg_rule = MsgRule::discover_zone;
+  EarlyRequests early_requests = EarlyRequests::wait;
+  DiskEdge disk = DiskEdge::closed; // Definition 4 (README, "Ranges")
 };
 
 // The automaton and the handles the properties read.

@@ -47,6 +47,13 @@ const std::vector<Scenario>& scenarios() {
        4,
        6,
        {{{0, 2}, {2, 2}, {4, 2}}, {{2, 0}, {2, 3}}, {{4, 0}, {4, 3}}}},
+      {"range-edge",
+       "two robots exactly C apart whose zones meet on the middle cell: Definition 4's closed "
+       "disk allows both zones, and the robots cannot hear each other (finding P3)",
+       5,
+       1,
+       4,
+       {{{0, 0}, {2, 0}}, {{4, 0}, {2, 0}}}},
       {"pinwheel",
        "four robots on four lines around a square: each path crosses two others in motion",
        4,
@@ -71,7 +78,7 @@ const Scenario& find_scenario(const std::string& name) {
   throw std::invalid_argument("unknown scenario '" + name + "'");
 }
 
-std::optional<std::string> check_scenario(const Scenario& s) {
+std::optional<std::string> check_scenario(const Scenario& s, DiskEdge edge) {
   if (s.robots() < 1 || s.robots() > max_robots)
     return "a scenario has 1.." + std::to_string(max_robots) + " robots";
   if (s.range < 1)
@@ -90,9 +97,10 @@ std::optional<std::string> check_scenario(const Scenario& s) {
       for (int k = 0; k < s.chunks(r); ++k) {
         const Cell from = s.paths[r][k], to = s.paths[r][k + 1];
         const Zone zone = plane.zone(from, to); // throws when the chunk is not straight
-        if ((zone.all() & ~plane.disk(from, s.range * s.range)) != 0)
+        if ((zone.all() & ~plane.disk(from, s.range * s.range, edge)) != 0)
           return robot_name(r) + "'s chunk " + to_string(from) + "-" + to_string(to) +
-                 " leaves Cir(" + to_string(from) + ", C/2) (Definition 4)";
+                 " leaves the " + (edge == DiskEdge::closed ? "closed" : "open") + " disk Cir(" +
+                 to_string(from) + ", C/2) (Definition 4)";
       }
     }
   } catch (const std::invalid_argument& e) {

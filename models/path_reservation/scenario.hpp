@@ -30,7 +30,8 @@ const Scenario& find_scenario(const std::string& name); // throws std::invalid_a
 
 // Why the scenario cannot be modelled, or nullopt: the plane, the number of robots and
 // chunks, straight chunks, distinct start cells, and Definition 4 (every zone lies in
-// Cir(start of its chunk, C/2)).
-std::optional<std::string> check_scenario(const Scenario& scenario);
+// Cir(start of its chunk, C/2), a closed or an open disk).
+std::optional<std::string> check_scenario(const Scenario& scenario,
+                                          DiskEdge edge = DiskEdge::closed);
 
 } // namespace path_reservation

@@ -3,29 +3,13 @@
 // variant shows each safety check failing; the findings P1 and P2 of the README replayed.
 #include <catch2/catch.hpp>
 
-#include "checker/property.hpp"
-#include "models/path_reservation/path_reservation_model.hpp"
 #include "models/registry.hpp"
+#include "tests/models/path_reservation/run_check.hpp"
 
-using checker::PropertyResult;
 using checker::Verdict;
+using path_reservation_test::run;
 
 namespace {
-
-PropertyResult run(const std::string& scenario, const std::string& property,
-                   const std::string& variant = "paper", const std::string& sort = "distance") {
-  const auto& definition = models::find_model("path-reservation");
-  const auto params = models::resolve_params(
-      definition, {"scenario=" + scenario, "variant=" + variant, "sort=" + sort});
-  const auto instance = definition.build(params);
-  for (const auto& p : instance.properties)
-    if (p.name == property) {
-      checker::ExploreOptions options;
-      options.threads = 2;
-      return checker::run_property(instance.system, p, options);
-    }
-  throw std::logic_error("test: no property " + property);
-}
 
 struct Pin {
   const char* scenario;
@@ -72,19 +56,19 @@ TEST_CASE("path-reservation: releasing before reserving breaks every safety prop
           "[path-reservation]") {
   for (const char* property : {"mutual-exclusion", "integrity", "no-collision"}) {
     INFO(property);
-    const auto r = run("crossing", property, "release-before-reserve");
+    const auto r = run("crossing", property, {"variant=release-before-reserve"});
     REQUIRE(r.verdict == Verdict::violated);
     REQUIRE(r.trace);
     CHECK(r.trace_kind == "invariant");
   }
-  CHECK(run("crossing", "integrity", "release-before-reserve").trace->steps.size() == 10);
+  CHECK(run("crossing", "integrity", {"variant=release-before-reserve"}).trace->steps.size() == 10);
 }
 
 TEST_CASE("path-reservation: on the cycle of three cells every robot raises risk-cycle",
           "[path-reservation]") {
   for (const char* sort : {"distance", "id"}) {
     INFO(sort);
-    const auto r = run("cycle", "progress", "paper", sort);
+    const auto r = run("cycle", "progress", {std::string("sort=") + sort});
     REQUIRE(r.verdict == Verdict::holds);
     REQUIRE(r.trace); // the worst-case witness: it ends with all three halted
     const auto& last = r.trace->steps.back();
