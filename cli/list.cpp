@@ -6,6 +6,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_status.hpp"
 #include "cli/output.hpp"
+#include "cli/report_text.hpp"
 #include "models/registry.hpp"
 
 namespace cli {
@@ -18,11 +19,12 @@ Json list_json() {
     Json params = Json::array();
     for (const auto& p : def.params) {
       const bool choice = p.kind == models::ParamKind::choice;
+      const bool number = !choice && p.kind != models::ParamKind::text;
       Json param{{"name", p.name},
                  {"kind", models::to_string(p.kind)},
                  {"default", param_json(p.default_value)},
-                 {"lo", choice ? Json() : param_json(p.lo)}, // null: a choice has no bounds
-                 {"hi", choice ? Json() : param_json(p.hi)},
+                 {"lo", number ? param_json(p.lo) : Json()}, // null: no bounds
+                 {"hi", number ? param_json(p.hi) : Json()},
                  {"range", p.range()},
                  {"description", p.description}};
       if (choice)
@@ -52,16 +54,17 @@ void print_list_text() {
     auto range = [](const models::ParamSpec& p) {
       return p.kind == models::ParamKind::choice ? std::string("choice") : p.range();
     };
+    auto default_value = [](const models::ParamSpec& p) { return format_value(p.default_value); };
     std::size_t name_width = 0, default_width = 0, range_width = 0;
     for (const auto& p : def.params) {
       name_width = std::max(name_width, p.name.size());
-      default_width = std::max(default_width, p.default_value.text().size());
+      default_width = std::max(default_width, default_value(p).size());
       range_width = std::max(range_width, range(p).size());
     }
     std::cout << "  parameters:\n";
     for (const auto& p : def.params) {
       std::cout << fmt::format("    {:<{}}  default {:<{}}  range {:<{}}  {}\n", p.name, name_width,
-                               p.default_value.text(), default_width, range(p), range_width,
+                               default_value(p), default_width, range(p), range_width,
                                p.description);
       if (p.kind == models::ParamKind::choice)
         std::cout << fmt::format("    {:<{}}  one of: {}\n", "", name_width,

@@ -98,7 +98,7 @@ Json property_json(const ModelRun& run, const checker::PropertyResult& r, bool w
 }
 
 Json param_json(const models::ParamValue& value) {
-  if (value.is_choice())
+  if (!value.is_number()) // a choice or a text
     return value.text();
   if (value.whole())
     return value.integer();

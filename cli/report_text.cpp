@@ -50,8 +50,12 @@ std::string upper(std::string text) {
 std::string format_params(const OrderedParams& params) {
   std::string text;
   for (const auto& [name, value] : params)
-    text += (text.empty() ? "" : " ") + name + "=" + value.text();
+    text += (text.empty() ? "" : " ") + name + "=" + format_value(value);
   return text;
+}
+
+std::string format_value(const models::ParamValue& value) {
+  return value.is_text() && value.text().empty() ? "\"\"" : value.text();
 }
 
 std::string format_worst_time(const checker::PropertyResult& result) {

@@ -6,8 +6,15 @@ namespace models {
 
 ParamValue ParamValue::choice(std::string name) {
   ParamValue value;
-  value.is_choice_ = true;
+  value.kind_ = Kind::choice;
   value.name_ = std::move(name);
+  return value;
+}
+
+ParamValue ParamValue::text(std::string content) {
+  ParamValue value;
+  value.kind_ = Kind::text;
+  value.name_ = std::move(content);
   return value;
 }
 
@@ -18,13 +25,14 @@ std::int64_t ParamValue::integer() const {
 }
 
 const Rational& ParamValue::rational() const {
-  if (is_choice_)
-    throw std::logic_error("parameter value " + text() + " is a choice, not a number");
+  if (!is_number())
+    throw std::logic_error("parameter value " + text() + " is " +
+                           (is_choice() ? "a choice" : "a text") + ", not a number");
   return value_;
 }
 
 std::string ParamValue::text() const {
-  if (is_choice_)
+  if (!is_number())
     return name_;
   if (whole())
     return boost::multiprecision::numerator(value_).str();

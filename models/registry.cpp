@@ -31,6 +31,8 @@ const char* to_string(ParamKind kind) {
     return "rational";
   case ParamKind::choice:
     return "choice";
+  case ParamKind::text:
+    return "text";
   }
   return "?";
 }
@@ -46,9 +48,20 @@ ParamSpec ParamSpec::choice(std::string name, std::string default_choice,
   return spec;
 }
 
+ParamSpec ParamSpec::text(std::string name, std::string default_text, std::string description) {
+  ParamSpec spec;
+  spec.name = std::move(name);
+  spec.default_value = ParamValue::text(std::move(default_text));
+  spec.description = std::move(description);
+  spec.kind = ParamKind::text;
+  return spec;
+}
+
 std::string ParamSpec::range() const {
   if (kind == ParamKind::choice)
     return "{" + join(choices) + "}";
+  if (kind == ParamKind::text)
+    return "text";
   if (kind == ParamKind::integer)
     return lo.text() + ".." + hi.text();
   return std::string(lo_open ? "(" : "[") + lo.text() + ", " + hi.text() + (hi_open ? ")" : "]");
@@ -96,6 +109,10 @@ ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::
         throw UsageError("parameter " + name + ": '" + text + "' is not one of " +
                          join(spec->choices));
       values[name] = ParamValue::choice(text);
+      continue;
+    }
+    if (spec->kind == ParamKind::text) {
+      values[name] = ParamValue::text(text);
       continue;
     }
     ParamValue value;

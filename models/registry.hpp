@@ -15,13 +15,13 @@
 
 namespace models {
 
-enum class ParamKind { integer, rational, choice };
+enum class ParamKind { integer, rational, choice, text };
 
-const char* to_string(ParamKind kind); // "integer", "rational", "choice"
+const char* to_string(ParamKind kind); // "integer", "rational", "choice", "text"
 
 // A parameter: a whole number in lo..hi, a rational ("9/10", "0.9", "2") in the interval
-// from lo to hi, each end closed or open (rho in (0, 1)), or one name of a list of
-// choices (lo and hi unused).
+// from lo to hi, each end closed or open (rho in (0, 1)), one name of a list of choices,
+// or a free text such as a file name (for these two, lo and hi are unused).
 struct ParamSpec {
   std::string name;
   ParamValue default_value = 0;
@@ -36,8 +36,10 @@ struct ParamSpec {
   // A choice parameter; default_choice must be one of the choices.
   static ParamSpec choice(std::string name, std::string default_choice,
                           std::vector<std::string> choices, std::string description);
+  // A text parameter: any text is a value (the model checks it when it builds).
+  static ParamSpec text(std::string name, std::string default_text, std::string description);
 
-  std::string range() const; // "2..20", "(0, 1)", "{standard, given}"
+  std::string range() const; // "2..20", "(0, 1)", "{standard, given}", "text"
 };
 
 using ParamValues = std::map<std::string, ParamValue>;

@@ -1,0 +1,91 @@
+// Text parameters (models/registry.hpp, ParamKind::text): any text is a value, kept as
+// given; it prints as itself and orders after the numbers and choices that count as 0.
+#include <catch2/catch.hpp>
+
+#include <map>
+#include <stdexcept>
+
+#include "models/registry.hpp"
+
+using models::ParamSpec;
+using models::ParamValue;
+
+namespace {
+
+// A model with one text parameter and one whole number, for resolve_params.
+models::ModelDefinition model_with_text() {
+  models::ModelDefinition model;
+  model.name = "text-model";
+  model.params = {ParamSpec::text("file", "default.txt", "a file to read"),
+                  {"N", 3, 1, 9, "a number"}};
+  return model;
+}
+
+} // namespace
+
+TEST_CASE("ParamSpec::text: kind, default and range", "[models][registry][params]") {
+  const ParamSpec spec = ParamSpec::text("scenario_file", "", "a scenario file");
+  CHECK(spec.kind == models::ParamKind::text);
+  CHECK(std::string(models::to_string(spec.kind)) == "text");
+  CHECK(spec.range() == "text");
+  CHECK(spec.default_value == ParamValue::text(""));
+  CHECK(spec.description == "a scenario file");
+  CHECK(spec.choices.empty());
+}
+
+TEST_CASE("ParamValue::text: the text as given, and no number", "[models][registry][params]") {
+  const auto file = ParamValue::text("dir/a b,c.txt");
+  CHECK(file.is_text());
+  CHECK_FALSE(file.is_choice());
+  CHECK_FALSE(file.is_number());
+  CHECK_FALSE(file.whole());
+  CHECK(file.text() == "dir/a b,c.txt");
+  CHECK_THROWS_AS(file.integer(), std::logic_error);
+  CHECK_THROWS_WITH(file.rational(), "parameter value dir/a b,c.txt is a text, not a number");
+  CHECK_FALSE(ParamValue::text("3").whole()); // a text of digits stays a text
+  CHECK(ParamValue(3).is_number());
+  CHECK(ParamValue::choice("line").is_choice());
+  CHECK_FALSE(ParamValue::choice("line").is_text());
+}
+
+// The suite keys instances by parameter set (see the regression test in registry_test.cpp):
+// the order must stay strict and weak with texts among numbers and choices.
+TEST_CASE("ParamValue::text: equality and a strict weak order", "[models][registry][params]") {
+  const std::vector<ParamValue> ascending{ParamValue(-1),
+                                          ParamValue(0),
+                                          ParamValue::choice("a"),
+                                          ParamValue::choice("b"),
+                                          ParamValue::text(""),
+                                          ParamValue::text("a"),
+                                          ParamValue::text("b.txt"),
+                                          ParamValue(models::Rational(1, 2)),
+                                          ParamValue(1)};
+  for (std::size_t i = 0; i < ascending.size(); ++i)
+    for (std::size_t j = 0; j < ascending.size(); ++j) {
+      INFO(i << " " << j);
+      CHECK((ascending[i] < ascending[j]) == (i < j));
+      CHECK((ascending[i] == ascending[j]) == (i == j));
+    }
+  CHECK(ParamValue::text("a") != ParamValue::choice("a"));
+  CHECK(ParamValue::text("3") != ParamValue(3));
+  std::map<models::ParamValues, int> keyed;
+  keyed[{{"file", ParamValue::text("a.txt")}}] = 1;
+  keyed[{{"file", ParamValue::text("b.txt")}}] = 2;
+  keyed[{{"file", ParamValue::choice("a.txt")}}] = 3;
+  CHECK(keyed.size() == 3);
+}
+
+TEST_CASE("resolve_params: a text parameter takes any text", "[models][registry][params]") {
+  const auto model = model_with_text();
+  CHECK(models::resolve_params(model, {}).at("file") == ParamValue::text("default.txt"));
+  CHECK(models::resolve_params(model, {"file=dir/a b.txt"}).at("file") ==
+        ParamValue::text("dir/a b.txt"));
+  CHECK(models::resolve_params(model, {"file="}).at("file") == ParamValue::text(""));
+  CHECK(models::resolve_params(model, {"file=a=b"}).at("file") == ParamValue::text("a=b"));
+  CHECK(models::resolve_params(model, {"file=7"}).at("file") == ParamValue::text("7"));
+  CHECK(models::resolve_params(model, {"file=a,b.txt", "N=4"}) ==
+        models::ParamValues{{"file", ParamValue::text("a,b.txt")}, {"N", 4}});
+  // A suite entry's values go back through resolve_params as "name=value" settings.
+  const auto values = models::resolve_params(model, {"file=x y.txt"});
+  CHECK(models::resolve_params(model, {"file=" + values.at("file").text()}) == values);
+}
