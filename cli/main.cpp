@@ -71,8 +71,7 @@ void add_model_options(CLI::App* command, cli::ModelRequest& request) {
       ->add_option("-p,--param", request.param_settings,
                    "a parameter setting name=value (repeatable; or name=value,name=value)")
       ->type_name("NAME=VALUE")
-      ->allow_extra_args(false)
-      ->delimiter(',');
+      ->allow_extra_args(false); // split by models::split_settings, not at every comma
   command->add_option("--prop", request.properties, "a property to check (repeatable)")
       ->type_name("NAME")
       ->allow_extra_args(false)
@@ -191,6 +190,7 @@ int main(int argc, char** argv) {
     return fail("a command is required: list, check, explore, suite, round or simulate");
   }
 
+  request.param_settings = models::split_settings(request.param_settings);
   settings.limits.max_states = limits.max_states;
   settings.limits.max_seconds = limits.max_seconds;
   if (limits.max_memory_mib > (std::numeric_limits<std::uint64_t>::max() >> 20))

@@ -141,4 +141,25 @@ ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::
   return values;
 }
 
+std::vector<std::string> split_settings(const std::vector<std::string>& arguments) {
+  std::vector<std::string> settings;
+  for (const auto& argument : arguments) {
+    bool first = true;
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t comma = std::min(argument.find(',', start), argument.size());
+      const std::string piece = argument.substr(start, comma - start);
+      if (first || piece.find('=') != std::string::npos)
+        settings.push_back(piece);
+      else
+        settings.back() += "," + piece;
+      first = false;
+      if (comma == argument.size())
+        break;
+      start = comma + 1;
+    }
+  }
+  return settings;
+}
+
 } // namespace models

@@ -81,4 +81,9 @@ const ModelDefinition& find_model(const std::string& name); // throws UsageError
 // Defaults overridden by "name=value" settings; every value parsed and range-checked.
 ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::string>& settings);
 
+// The settings in command-line arguments of the form "name=value,name=value". A piece
+// without '=' continues the value before it, so that a text (a file name) may hold commas:
+// "scenario_file=a,b.txt" is one setting.
+std::vector<std::string> split_settings(const std::vector<std::string>& arguments);
+
 } // namespace models

@@ -1,5 +1,6 @@
 // Text parameters (models/registry.hpp, ParamKind::text): any text is a value, kept as
-// given; it prints as itself and orders after the numbers and choices that count as 0.
+// given; it prints as itself, orders after the numbers and choices that count as 0, and
+// a text with commas survives the command line's "name=value,name=value".
 #include <catch2/catch.hpp>
 
 #include <map>
@@ -88,4 +89,19 @@ TEST_CASE("resolve_params: a text parameter takes any text", "[models][registry]
   // A suite entry's values go back through resolve_params as "name=value" settings.
   const auto values = models::resolve_params(model, {"file=x y.txt"});
   CHECK(models::resolve_params(model, {"file=" + values.at("file").text()}) == values);
+}
+
+TEST_CASE("split_settings: commas separate settings, except inside a value",
+          "[models][registry][params]") {
+  using Settings = std::vector<std::string>;
+  CHECK(models::split_settings({"N=3,K=2"}) == Settings{"N=3", "K=2"});
+  CHECK(models::split_settings({"N=3", "K=2"}) == Settings{"N=3", "K=2"});
+  CHECK(models::split_settings({"file=a,b.txt"}) == Settings{"file=a,b.txt"});
+  CHECK(models::split_settings({"file=a,b,c.txt,N=3"}) == Settings{"file=a,b,c.txt", "N=3"});
+  CHECK(models::split_settings({"file=a,", "N=3"}) == Settings{"file=a,", "N=3"});
+  // Malformed pieces stay for resolve_params to report.
+  CHECK(models::split_settings({"N"}) == Settings{"N"});
+  CHECK(models::split_settings({""}) == Settings{""});
+  CHECK(models::split_settings({",N=3"}) == Settings{"", "N=3"});
+  CHECK(models::split_settings({}).empty());
 }
