@@ -1,5 +1,6 @@
-// Exploration speed on the two peer models: states, edges, seconds, states per second,
-// peak memory and thread count for each size. Run: build/bench/bench_explore [--threads N]
+// Exploration speed on the two peer models and on path-reservation: states, edges, seconds, states
+// per second, peak memory and thread count for each size. Run: build/bench/bench_explore [--threads
+// N]
 // [--quick]. Counts are checked against the same exploration on every run (they must not
 // depend on the thread count); speed is only printed, never asserted.
 
@@ -13,6 +14,7 @@
 
 #include "checker/explorer.hpp"
 #include "models/fischer/fischer.hpp"
+#include "models/path_reservation/protocol.hpp"
 #include "models/token_ring/token_ring.hpp"
 
 namespace {
@@ -57,6 +59,15 @@ int main(int argc, char** argv) {
   const int max_fischer = quick ? 5 : 7;
   for (int n = 4; n <= max_fischer; ++n)
     run("fischer N=" + std::to_string(n) + " A=1 B=2", models::build_fischer(n, 1, 2).system,
+        threads);
+  // The scenarios of seed 004 with three and four robots; pinwheel is the one the suite
+  // leaves to a unit test.
+  const std::vector<const char*> scenarios =
+      quick ? std::vector<const char*>{"late-joiner"}
+            : std::vector<const char*>{"late-joiner", "cycle", "pinwheel"};
+  for (const char* scenario : scenarios)
+    run(std::string("path-reservation ") + scenario,
+        path_reservation::build_protocol(path_reservation::find_scenario(scenario), {}).system,
         threads);
   return 0;
 }

@@ -78,8 +78,12 @@ for (const trace of document.querySelectorAll('.trace')) {
 }
 )";
 
+// A string as it is, but an empty one as "" (as the text report writes an empty text
+// parameter), so that "name=" never looks like a value was lost.
 std::string scalar_text(const Json& value) {
-  return value.is_string() ? value.get<std::string>() : value.dump();
+  if (!value.is_string())
+    return value.dump();
+  return value.get<std::string>().empty() ? "\"\"" : value.get<std::string>();
 }
 
 std::string params_text(const Json& params) {

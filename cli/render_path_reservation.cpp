@@ -13,6 +13,7 @@
 
 #include "cli/html_text.hpp"
 #include "models/path_reservation/path_geometry.hpp"
+#include "models/path_reservation/scenario_file.hpp"
 
 namespace cli {
 
@@ -220,16 +221,25 @@ void arrow(std::ostream& out, const Disc& from, const Disc& to, int slot, const 
       << "</text>\n";
 }
 
+// The scenario the report's parameters name: its scenario file when it has one (read
+// again here; the check has just read it), else the built-in scenario.
+path_reservation::Scenario scenario_of(const Json& params) {
+  const auto file = params.find("scenario_file");
+  if (file != params.end() && file->is_string() && !file->get<std::string>().empty())
+    return path_reservation::read_scenario_file(file->get<std::string>());
+  const auto name = params.find("scenario");
+  if (name == params.end() || !name->is_string())
+    throw std::invalid_argument("the report names no scenario");
+  return path_reservation::find_scenario(name->get<std::string>());
+}
+
 } // namespace
 
 void write_path_reservation_picture(std::ostream& out, const Json& params, const Json& state,
                                     const std::string& id) {
   std::optional<PathGeometry> built;
   try {
-    const auto name = params.find("scenario");
-    if (name == params.end() || !name->is_string())
-      throw std::invalid_argument("the report names no scenario");
-    built.emplace(path_reservation::find_scenario(name->get<std::string>()));
+    built.emplace(scenario_of(params));
   } catch (const std::exception& e) {
     out << "<p class=\"no-picture\">no picture: " << html_text(e.what()) << "</p>\n";
     return;

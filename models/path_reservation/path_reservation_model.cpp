@@ -1,5 +1,10 @@
 #include "models/path_reservation/path_reservation_model.hpp"
 
+#include <stdexcept>
+
+#include "models/path_reservation/scenario_file.hpp"
+#include "tioa/errors.hpp"
+
 namespace models {
 
 using path_reservation::Protocol;
@@ -61,6 +66,17 @@ bool all_finished(const Protocol& p, const State& s) {
 
 } // namespace
 
+path_reservation::Scenario chosen_scenario(const ParamValues& params) {
+  const std::string& file = params.at("scenario_file").text();
+  if (file.empty())
+    return path_reservation::find_scenario(choice(params, "scenario"));
+  try {
+    return path_reservation::read_scenario_file(file);
+  } catch (const std::invalid_argument& e) {
+    throw tioa::ModelError(e.what()); // one line: <file>:<line>: what is wrong
+  }
+}
+
 Protocol path_reservation_protocol(const ParamValues& params) {
   path_reservation::ProtocolOptions options;
   options.sort_by_distance = choice(params, "sort") == "distance";
@@ -75,8 +91,7 @@ Protocol path_reservation_protocol(const ParamValues& params) {
                                : path_reservation::EarlyRequests::answer;
   options.disk = choice(params, "disk") == "closed" ? path_reservation::DiskEdge::closed
                                                     : path_reservation::DiskEdge::open;
-  return path_reservation::build_protocol(
-      path_reservation::find_scenario(choice(params, "scenario")), options);
+  return path_reservation::build_protocol(chosen_scenario(params), options);
 }
 
 ModelDefinition path_reservation_definition() {
@@ -86,6 +101,9 @@ ModelDefinition path_reservation_definition() {
   d.params = {
       ParamSpec::choice("scenario", "crossing", path_reservation::scenario_names(),
                         "the robots and their paths (models/path_reservation/README.md)"),
+      ParamSpec::text("scenario_file", "",
+                      "a scenario read from this file instead of `scenario` (format: "
+                      "models/path_reservation/README.md, \"Scenario files\")"),
       ParamSpec::choice("sort", "distance", {"distance", "id"},
                         "SortSC of the Conflict resolver: distance to the shared cells then "
                         "id, or id alone"),

@@ -106,7 +106,7 @@ foreach(variant IN ITEMS "" _chromium)
             COMMAND ${tioa_check} check path-reservation
                     -p scenario=crossing,variant=release-before-reserve --prop no-collision
                     --threads 1 --html ${html_out}/path_reservation${variant}.html
-            PAGE_REGEX "<title>tioa-check: path-reservation \\(scenario=crossing, sort=distance, variant=release-before-reserve\\)</title>"
+            PAGE_REGEX "<title>tioa-check: path-reservation \\(scenario=crossing, scenario_file=[^,]*, sort=distance, variant=release-before-reserve, [^<]*\\)</title>"
                        "<b>no-collision</b> \\(invariant\\): <span class=\"verdict-violated\">violated</span>"
                        "<svg [^>]*class=\"path-reservation\""
                        "<polyline class=\"path r1\"" "<polyline class=\"path r2\""
@@ -131,6 +131,14 @@ foreach(variant IN ITEMS "" _chromium)
                        "<line class=\"msg Overlap\""
                        "Overlap R[123] → R[123] \\(zone of chunk 0, list {R[123], R[123]}\\)</li>")
 endforeach()
+# A scenario from a file is drawn from the file (R1 starts on (0,0), on no built-in path).
+html_test(html_path_reservation_file EXIT 0 PAGE ${html_out}/path_reservation_file.html
+          COMMAND ${tioa_check} check path-reservation
+                  -p scenario_file=${PROJECT_SOURCE_DIR}/models/path_reservation/scenarios/diagonal.txt
+                  --prop progress --threads 1 --html ${html_out}/path_reservation_file.html
+          PAGE_REGEX "<svg [^>]*class=\"path-reservation\""
+                     "R1</td><td>idle</td><td>0</td><td>\\(0,0\\)</td>"
+                     "R2</td><td>idle</td><td>0</td><td>\\(2,0\\)</td>")
 
 # Every model has a page: the generic table for Fischer (an invariant counterexample), a
 # page that says so where no property has a trace, and a usage error for a path that

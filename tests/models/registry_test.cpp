@@ -38,6 +38,8 @@ TEST_CASE("registry: every model builds with its defaults and lists its properti
     for (const auto& p : def.params) {
       if (p.kind == models::ParamKind::choice) {
         CHECK(std::count(p.choices.begin(), p.choices.end(), p.default_value.text()) == 1);
+      } else if (p.kind == models::ParamKind::text) {
+        CHECK(p.default_value.is_text()); // any text is in range
       } else {
         CHECK(p.lo <= p.default_value);
         CHECK(p.default_value <= p.hi);
