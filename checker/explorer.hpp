@@ -51,11 +51,14 @@ struct Exploration {
   std::vector<Edge> edge_list;  // when record_edges
   double seconds = 0;
   unsigned threads = 1;
+  // The most memory held at once as the memory limit counts it, reallocations included
+  // (their old and new buffers together).
+  std::size_t peak_memory_bytes = 0;
 
   bool complete() const { return stop == StopReason::finished || stop == StopReason::found; }
   std::size_t memory_bytes() const {
     return store.memory_bytes() + parent.capacity() * sizeof(StateId) +
-           edge_list.capacity() * sizeof(Edge);
+           stuck.capacity() * sizeof(StateId) + edge_list.capacity() * sizeof(Edge);
   }
 };
 

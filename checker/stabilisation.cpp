@@ -18,7 +18,9 @@
 #include <algorithm>
 #include <limits>
 #include <optional>
+#include <type_traits>
 #include <unordered_map>
+#include <vector>
 
 #include "checker/checks.hpp"
 
@@ -27,6 +29,38 @@ namespace checker {
 namespace {
 
 constexpr std::uint32_t unvisited = std::numeric_limits<std::uint32_t>::max();
+
+// The memory limit holds after the exploration too: the graph and the arrays of Tarjan's
+// algorithm are counted on top of what the exploration holds before they are allocated,
+// and a growing vector's new buffer with its old one (alive while it is copied).
+struct OverMemoryLimit {};
+
+class Meter {
+public:
+  Meter(std::size_t limit, std::size_t held) : limit_(limit), held_(held) {}
+  // Counts `bytes` more; throws OverMemoryLimit, before they are allocated, past the limit.
+  void take(std::size_t bytes) {
+    if (limit_ && held_ + bytes > limit_)
+      throw OverMemoryLimit{};
+    held_ += bytes;
+  }
+  void release(std::size_t bytes) { held_ -= bytes; }
+  template <class T> void push(std::vector<T>& v, const std::type_identity_t<T>& value) {
+    if (v.size() == v.capacity()) {
+      const std::size_t old_bytes = v.capacity() * sizeof(T);
+      const std::size_t capacity = std::max<std::size_t>(2 * v.capacity(), 16);
+      take(capacity * sizeof(T));
+      v.reserve(capacity);
+      release(old_bytes);
+    }
+    v.push_back(value);
+  }
+  template <class T> void release(const std::vector<T>& v) { release(v.capacity() * sizeof(T)); }
+
+private:
+  std::size_t limit_;
+  std::size_t held_;
+};
 
 struct Graph {
   std::vector<std::uint64_t> offsets; // per state
@@ -40,9 +74,13 @@ struct Graph {
   }
 };
 
-Graph build_graph(const Exploration& ex, const StatePredicate& legal,
-                  const StatePredicate& settled) {
+Graph build_graph(const Exploration& ex, const StatePredicate& legal, const StatePredicate& settled,
+                  Meter& meter) {
   const std::size_t n = ex.store.size();
+  const std::size_t edges = ex.edge_list.size();
+  // legal, settled, offsets, targets, and fill while the graph is built.
+  meter.take(2 * n + (n + 1) * sizeof(std::uint64_t) + edges * sizeof(std::uint32_t) +
+             n * sizeof(std::uint64_t));
   Graph g;
   g.legal.resize(n);
   g.settled.resize(n);
@@ -60,6 +98,7 @@ Graph build_graph(const Exploration& ex, const StatePredicate& legal,
   std::vector<std::uint64_t> fill(g.offsets.begin(), g.offsets.end() - 1);
   for (const Edge& e : ex.edge_list)
     g.targets[fill[e.from]++] = e.to;
+  meter.release(n * sizeof(std::uint64_t));
   return g;
 }
 
@@ -79,7 +118,10 @@ struct Components {
   std::uint64_t legal_locks = 0; // states in L from which time can never pass again
 };
 
-Components strongly_connected(const Graph& g, std::size_t n) {
+Components strongly_connected(const Graph& g, std::size_t n, Meter& meter) {
+  // of, index, low and on_stack.
+  const std::size_t fixed = 3 * n * sizeof(std::uint32_t) + n;
+  meter.take(fixed);
   Components c;
   c.of.assign(n, unvisited);
   std::vector<std::uint32_t> index(n, unvisited), low(n, 0);
@@ -101,7 +143,7 @@ Components strongly_connected(const Graph& g, std::size_t n) {
       stack.pop_back();
       on_stack[w] = 0;
       c.of[w] = id;
-      members.push_back(w);
+      meter.push(members, w);
     } while (w != root);
     std::optional<StateId> outside;
     bool internal = false, internal_timed = false, can_tick = false;
@@ -129,27 +171,27 @@ Components strongly_connected(const Graph& g, std::size_t n) {
     if (outside) {
       last = std::max<std::int64_t>(last, 0);
       if (!can_tick)
-        c.timelocked_members.push_back(*outside);
+        meter.push(c.timelocked_members, *outside);
       else if (internal_timed)
-        c.lasso_members.push_back(*outside);
+        meter.push(c.lasso_members, *outside);
       else if (internal)
         ++c.zeno;
     } else {
       if (internal_timed && last != Components::never)
-        c.unbounded_members.push_back(smallest);
+        meter.push(c.unbounded_members, smallest);
       if (!can_tick)
         c.legal_locks += members.size();
     }
-    c.last.push_back(last);
-    c.can_tick.push_back(can_tick ? 1 : 0);
+    meter.push(c.last, last);
+    meter.push(c.can_tick, can_tick ? 1 : 0);
   };
 
   for (StateId root = 0; root < n; ++root) {
     if (index[root] != unvisited)
       continue;
-    calls.push_back({root, g.offsets[root]});
+    meter.push(calls, Frame{root, g.offsets[root]});
     index[root] = low[root] = counter++;
-    stack.push_back(root);
+    meter.push(stack, root);
     on_stack[root] = 1;
     while (!calls.empty()) {
       Frame& f = calls.back();
@@ -157,9 +199,9 @@ Components strongly_connected(const Graph& g, std::size_t n) {
         const StateId t = g.targets[f.next++] & ~Edge::timed_bit;
         if (index[t] == unvisited) {
           index[t] = low[t] = counter++;
-          stack.push_back(t);
+          meter.push(stack, t);
           on_stack[t] = 1;
-          calls.push_back({t, g.offsets[t]});
+          meter.push(calls, Frame{t, g.offsets[t]});
         } else if (on_stack[t]) {
           low[f.v] = std::min(low[f.v], index[t]);
         }
@@ -173,6 +215,10 @@ Components strongly_connected(const Graph& g, std::size_t n) {
         finish_component(v);
     }
   }
+  meter.release(fixed - c.of.size() * sizeof(std::uint32_t));
+  meter.release(stack);
+  meter.release(members);
+  meter.release(calls);
   return c;
 }
 
@@ -307,8 +353,20 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
     mark_incomplete(r, ex, "no execution found to stay outside L so far");
     return r;
   }
-  const Graph g = build_graph(ex, legal, settled);
-  const Components c = strongly_connected(g, ex.store.size());
+  // The graph analysis holds on top of the exploration's store, parents and edges.
+  Meter meter(options.limits.max_memory_bytes, ex.memory_bytes());
+  Graph g;
+  Components c;
+  try {
+    g = build_graph(ex, legal, settled, meter);
+    c = strongly_connected(g, ex.store.size(), meter);
+  } catch (const OverMemoryLimit&) {
+    r.verdict = Verdict::incomplete;
+    r.message = "memory limit reached after the exploration (" + std::to_string(ex.store.size()) +
+                " states, " + std::to_string(ex.edge_list.size()) +
+                " edges): the graph of its components does not fit; no execution checked";
+    return r;
+  }
   const char* lock_kind = gen.timed() ? "time-lock" : "deadlock";
   if (!c.timelocked_members.empty()) {
     const StateId u = *std::min_element(c.timelocked_members.begin(), c.timelocked_members.end());

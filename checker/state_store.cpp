@@ -31,7 +31,7 @@ std::pair<StateId, bool> StateStore::insert(const Word* state, std::uint64_t has
   const StateId id = static_cast<StateId>(count_++);
   const std::size_t end = std::size_t{id} * words_;
   if (end + words_ > arena_.size())
-    arena_.resize(std::max<std::size_t>(2 * arena_.size(), 1024 * words_));
+    arena_.resize(arena_growth(arena_.size(), words_));
   for (std::uint32_t i = 0; i < words_; ++i)
     arena_[end + i] = state[i];
   Word* slot = table_.data() + at * stride_;

@@ -7,6 +7,7 @@
 // find() may run on several threads at once while nothing inserts; insert() is for one
 // thread at a time (the explorer's merge phase).
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -60,6 +61,18 @@ public:
 
   std::size_t memory_bytes() const { return arena_.capacity() * sizeof(Word) + table_.bytes(); }
 
+  // The bytes the next insert() allocates when it grows the table or the arena (0 when it
+  // does not). The old buffer stays alive while it is copied, so at that moment the store
+  // holds memory_bytes() + growth_bytes().
+  std::size_t growth_bytes() const {
+    std::size_t bytes = 0;
+    if ((count_ + 1) * 2 > mask_ + 1)
+      bytes += 2 * table_.bytes();
+    if ((count_ + 1) * words_ > arena_.size())
+      bytes += arena_growth(arena_.size(), words_) * sizeof(Word);
+    return bytes;
+  }
+
   static constexpr std::uint64_t max_states = 0xfffffff0u;
 
 private:
@@ -70,6 +83,10 @@ private:
     return true;
   }
   void grow();
+  // The arena's size after it grows from `size` words: it doubles.
+  static std::size_t arena_growth(std::size_t size, std::uint32_t words) {
+    return std::max<std::size_t>(2 * size, std::size_t{1024} * words);
+  }
 
   std::uint32_t words_;
   std::uint32_t stride_; // words per slot: tag << 32 | (id + 1), then the state

@@ -6,6 +6,7 @@
 
 #include "checker/checks.hpp"
 #include "checker/property.hpp"
+#include "models/fischer/fischer.hpp"
 #include "models/token_ring/token_ring.hpp"
 #include "tests/checker/helpers.hpp"
 
@@ -283,6 +284,32 @@ TEST_CASE("stabilisation: a timed countdown stabilises in exactly top quanta",
   CHECK(value_of(c, r.trace->steps.back().state, "x") == 0);
   CHECK(replays(c, *r.trace));
   CHECK(r.notes.empty());
+}
+
+// The graph analysis after the exploration counts against the memory limit too: with a
+// limit the exploration fits in but the graph does not, the verdict is incomplete.
+TEST_CASE("stabilisation: a graph over the memory limit gives incomplete",
+          "[checker][stabilisation][limits]") {
+  const auto fischer = models::build_fischer(3, 1, 2);
+  const tioa::SuccessorGenerator generator(fischer.system);
+  ExploreHooks hooks;
+  hooks.record_edges = true;
+  const Exploration ex = explore(generator, fischer.system.start(), {}, hooks);
+  REQUIRE(ex.complete());
+  // The store, parents and edges, and then legal, settled, offsets, targets and fill.
+  const std::size_t n = ex.store.size();
+  const std::size_t graph = 2 * n + 16 * n + 8 + 4 * ex.edge_list.size();
+  ExploreOptions options;
+  REQUIRE(ex.peak_memory_bytes < ex.memory_bytes() + graph); // the exploration fits
+  options.limits.max_memory_bytes = ex.memory_bytes() + graph - 1;
+  const tioa::StatePredicate legal = fischer.properties[0].predicate;
+  const PropertyResult r = check_stabilisation(fischer.system, legal, options);
+  CHECK(r.verdict == Verdict::incomplete);
+  CHECK(r.states == n);
+  CHECK(r.message.find("memory limit reached after the exploration") == 0);
+  CHECK_FALSE(r.trace);
+  options.limits.max_memory_bytes = 0;
+  CHECK(check_stabilisation(fischer.system, legal, options).verdict != Verdict::incomplete);
 }
 
 // Settled states (the caller vouches that executions are in L for good from them) are not

@@ -363,6 +363,37 @@ TEST_CASE("explore: time and memory limits stop the run, incomplete",
   }
 }
 
+// Regression: vlayer-mc lemma-7.3 on 2x2 with --max-memory 16000 was killed by the kernel
+// at 24 GB: buffers doubled between the checks of the limit. Now no buffer grows past it.
+TEST_CASE("explore: the memory limit holds at every growth", "[checker][explorer][limits]") {
+  const auto ring = models::build_token_ring(7, 6);
+  ExploreHooks hooks;
+  hooks.record_edges = true;
+  for (unsigned threads : {1u, 2u}) {
+    CAPTURE(threads);
+    ExploreOptions options = with_threads(threads);
+    const Exploration free = run(ring.system, options, hooks);
+    REQUIRE(free.complete());
+    REQUIRE(free.store.size() == 279936);
+    CHECK(free.peak_memory_bytes >= free.memory_bytes());
+    for (std::size_t share : {2u, 4u, 16u}) {
+      CAPTURE(share);
+      options.limits.max_memory_bytes = free.peak_memory_bytes / share;
+      const Exploration ex = run(ring.system, options, hooks);
+      CHECK(ex.stop == StopReason::memory_limit);
+      CHECK(ex.peak_memory_bytes <= options.limits.max_memory_bytes);
+      CHECK(ex.memory_bytes() <= options.limits.max_memory_bytes);
+      CHECK(ex.parent.size() == ex.store.size());
+    }
+    if (threads == 1) { // one worker: what fitted without a limit fits within its peak
+      options.limits.max_memory_bytes = free.peak_memory_bytes;
+      const Exploration ex = run(ring.system, options, hooks);
+      CHECK(ex.complete());
+      CHECK(ex.peak_memory_bytes == free.peak_memory_bytes);
+    }
+  }
+}
+
 TEST_CASE("explore: hooks", "[checker][explorer][hooks]") {
   const tioa::Automaton d = diamond();
   const auto a = tioa::Variable<bool>{d.layout().find("a")->slot()};
