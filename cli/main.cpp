@@ -1,6 +1,8 @@
 // tioa-check: the command line. Parses with CLI11, runs one command, and turns every
 // error on bad input into one line on stderr and exit code 2.
 
+#include <unistd.h>
+
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -59,10 +61,20 @@ const CLI::Validator seconds(
     },
     "S>=0", "seconds");
 
+// Without --max-memory a run stops at three quarters of the machine's memory: a model
+// whose space is too large (explore from U(A), say) then ends "incomplete" on the limit
+// instead of being killed by the kernel. 0 when the size cannot be read: no limit.
+std::uint64_t default_memory_mib() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0)
+    return 0;
+  return static_cast<std::uint64_t>(pages) / 4 * 3 * static_cast<std::uint64_t>(page_size) >> 20;
+}
+
 struct Limits {
   std::uint64_t max_states = 0;
   double max_seconds = 0;
-  std::uint64_t max_memory_mib = 0;
+  std::uint64_t max_memory_mib = default_memory_mib();
 };
 
 void add_model_options(CLI::App* command, cli::ModelRequest& request) {
@@ -96,7 +108,8 @@ void add_run_options(CLI::App* command, cli::RunSettings& settings, Limits& limi
       ->add_option(
           "--max-memory", limits.max_memory_mib,
           "stop when the exploration (state store, edges, the level in progress) exceeds MiB "
-          "mebibytes (0: no limit)")
+          "mebibytes (default: three quarters of the memory, " +
+              std::to_string(default_memory_mib()) + " here; 0: no limit)")
       ->type_name("MiB")
       ->check(whole_number);
   if (with_trace) {
