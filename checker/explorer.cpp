@@ -98,6 +98,7 @@ struct Worker {
   std::vector<Edge> edges;
   std::vector<StateId> stuck;
   std::vector<Word> scratch;
+  std::vector<Word> canonical; // a successor's representative (ExploreHooks::canonical)
   std::uint64_t edge_count = 0;
   std::uint64_t expanded = 0;
   std::exception_ptr error;
@@ -228,7 +229,7 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   };
 
   // Level 0: the start states, inserted in batches whose slots are prefetched first.
-  std::vector<Word> buffer(words + 1, 0);
+  std::vector<Word> buffer(words + 1, 0), representative(words + 1, 0);
   std::vector<Word> batch;
   std::vector<std::uint64_t> batch_hashes;
   auto insert_batch = [&] {
@@ -261,8 +262,14 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   };
   try {
     start.enumerate(buffer.data(), 0, [&] {
-      batch.insert(batch.end(), buffer.begin(), buffer.begin() + words);
-      batch_hashes.push_back(hash_state(buffer.data(), words));
+      const Word* state = buffer.data();
+      if (hooks.canonical) { // on a copy: the enumeration goes on from `buffer`
+        std::copy(buffer.begin(), buffer.end(), representative.begin());
+        hooks.canonical(representative.data());
+        state = representative.data();
+      }
+      batch.insert(batch.end(), state, state + words);
+      batch_hashes.push_back(hash_state(state, words));
       if (batch_hashes.size() == start_batch) {
         insert_batch();
         if (stopped)
@@ -273,8 +280,10 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   } catch (const StopEnumeration&) {
   }
 
-  for (auto& w : workers)
+  for (auto& w : workers) {
     w.scratch.assign(words + 1, 0);
+    w.canonical.assign(words + 1, 0);
+  }
   std::atomic<bool> out_of_time{false}, out_of_memory{false};
 
   std::size_t used = 1; // threads expanding the current level
@@ -305,6 +314,11 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
         w.pending.clear();
         const std::size_t n = generator.successors(
             state, w.scratch.data(), [&](const Word* succ, const tioa::StepLabel& label) {
+              if (hooks.canonical) {
+                std::copy(succ, succ + words, w.canonical.begin());
+                hooks.canonical(w.canonical.data());
+                succ = w.canonical.data();
+              }
               const std::uint64_t h = hash_state(succ, words);
               ex.store.prefetch(h);
               w.pending_states.push(succ);

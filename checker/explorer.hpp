@@ -33,6 +33,11 @@ struct Edge {
 struct ExploreHooks {
   std::function<bool(const Word*)> expand; // expand this state? (default: yes)
   std::function<bool(const Word*)> target; // stop at the first stored state where true
+  // Replaces every state (start or successor) by its representative before it is looked
+  // up, so the store holds one state per class. Sound only when states of one class have
+  // successors of the same classes (a bisimulation); parents then link representatives,
+  // which need not replay as a trace of the automaton.
+  std::function<void(Word*)> canonical;
   bool record_edges = false;
 };
 

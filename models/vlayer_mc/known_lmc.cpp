@@ -47,23 +47,23 @@ KnownLmc::KnownLmc(const VlConfig& c, const tioa::Automaton& layer,
       tioa::State state(s.data(), 0);
       for (std::size_t n = 0; n < nodes_.size(); ++n)
         state.set_code(nodes_[n].failed, (mask >> n) & 1);
-      canonical(state);
       family.data.insert(family.data.end(), s.begin(), s.end());
     }
   });
   family_size_ = family.size();
   const tioa::Automaton from = tioa::Start(layer, family.start(layer, "the reset family"));
   const tioa::SuccessorGenerator generator(from);
-  const checker::Exploration ex = checker::explore(generator, from.start(), o);
-  complete_ = ex.complete();
-  known_ = std::make_shared<checker::StateStore>(words_);
-  std::vector<Word> copy(words_ + 1, 0);
-  for (checker::StateId id = 0; id < ex.store.size(); ++id) {
-    std::copy(ex.store.state(id), ex.store.state(id) + words_, copy.begin());
-    tioa::State state(copy.data(), 0);
+  // Exploring the classes directly (one representative each) is sound because states of a
+  // class have successors of the same classes: what `canonical` resets nothing reads again.
+  // It keeps one store instead of the reachable states and their representatives.
+  checker::ExploreHooks hooks;
+  hooks.canonical = [this](Word* w) {
+    tioa::State state(w, 0);
     canonical(state);
-    known_->insert(copy.data(), checker::hash_state(copy.data(), words_));
-  }
+  };
+  checker::Exploration ex = checker::explore(generator, from.start(), o, hooks);
+  complete_ = ex.complete();
+  known_ = std::make_shared<checker::StateStore>(std::move(ex.store));
 }
 
 bool KnownLmc::contains(const tioa::State& s) const {
@@ -72,6 +72,13 @@ bool KnownLmc::contains(const tioa::State& s) const {
   tioa::State state(copy.data(), 0);
   canonical(state);
   return known_->find(copy.data(), checker::hash_state(copy.data(), words_)).has_value();
+}
+
+std::vector<Word> KnownLmc::representative(const tioa::State& s) const {
+  std::vector<Word> copy(s.words(), s.words() + words_);
+  tioa::State state(copy.data(), 0);
+  canonical(state);
+  return copy;
 }
 
 KnownLmc::Node KnownLmc::node(const tioa::Automaton& layer, const std::string& prefix) {

@@ -30,6 +30,8 @@ public:
   std::uint64_t family_size() const { return family_size_; }
   // Whether `s`, compared as above, is one of the known LMC states (thread-safe).
   bool contains(const tioa::State& s) const;
+  // The representative of `s`'s class: `s` with what nothing reads again reset.
+  std::vector<tioa::Word> representative(const tioa::State& s) const;
 
 private:
   struct Node {

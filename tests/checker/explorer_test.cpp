@@ -433,6 +433,27 @@ TEST_CASE("explore: hooks", "[checker][explorer][hooks]") {
     const Exploration ex = run(d, {}, hooks);
     CHECK(ex.found == StateId{1}); // 10, reached by setA before 01 by setB
   }
+  // The diamond is symmetric in a and b; ordering them (b ≤ a) keeps one state per class:
+  // {00}, {10, 01}, {11}.
+  const auto ordered = [&](Word* w) {
+    State s(w, 0);
+    if (!s[a] && s[b]) {
+      s[a] = true;
+      s[b] = false;
+    }
+  };
+  SECTION("canonical: one state per class, successors and start states alike") {
+    ExploreHooks hooks;
+    hooks.canonical = ordered;
+    const Exploration ex = run(d, with_threads(2), hooks);
+    CHECK(ex.store.size() == 3);
+    CHECK(ex.edges == 3); // 00 -setA-> 10, 00 -setB-> 10, 10 -setB-> 11
+    for (StateId id = 0; id < ex.store.size(); ++id)
+      CHECK_FALSE((!State(ex.store.state(id), 0)[a] && State(ex.store.state(id), 0)[b]));
+    const Exploration anywhere = run(tioa::U(d), {}, hooks);
+    CHECK(anywhere.start_states == 3); // the four valuations, three classes
+    CHECK(anywhere.store.size() == 3);
+  }
   SECTION("target never true: finished") {
     ExploreHooks hooks;
     hooks.target = [](const Word*) { return false; };
