@@ -12,8 +12,8 @@ namespace vlayer {
 using tioa::Word;
 
 KnownLmc::KnownLmc(const VlConfig& c, const tioa::Automaton& layer,
-                   const checker::ExploreOptions& o)
-    : words_(layer.words()) {
+                   const checker::ExploreOptions& o, const tioa::StatePredicate& stop_at)
+    : words_(layer.words()), family_{layer.words(), {}} {
   for (int p = 0; p < c.robots; ++p)
     nodes_.push_back(node(layer, names::cn_name(p) + "."));
   for (int u = 0; u < c.lattice().regions(); ++u)
@@ -39,31 +39,31 @@ KnownLmc::KnownLmc(const VlConfig& c, const tioa::Automaton& layer,
     guarded(at("VBcast.vn_mask", u), {at("VBcast.vn_age", u), at("VBcast.vn_count", u)});
   for (int i = 0; i < regions * robots; ++i)
     guarded(at("VBcast.tu_pending", i), {at("VBcast.tu_age", i), at("VBcast.tu_target", i)});
-  StateList family{words_, {}};
   std::vector<Word> buffer(words_ + 1, 0);
   reset_family(c, layer).enumerate(buffer.data(), 0, [&] {
     for (std::uint64_t mask = 0; mask < (std::uint64_t{1} << nodes_.size()); ++mask) {
-      std::vector<Word> s(buffer.begin(), buffer.end() - 1);
+      std::vector<Word> s(buffer.begin(), buffer.end() - 1); // `buffer` is the enumeration's
       tioa::State state(s.data(), 0);
       for (std::size_t n = 0; n < nodes_.size(); ++n)
         state.set_code(nodes_[n].failed, (mask >> n) & 1);
-      family.data.insert(family.data.end(), s.begin(), s.end());
+      family_.data.insert(family_.data.end(), s.begin(), s.end());
     }
   });
-  family_size_ = family.size();
-  const tioa::Automaton from = tioa::Start(layer, family.start(layer, "the reset family"));
+  const tioa::Automaton from = from_family(layer);
   const tioa::SuccessorGenerator generator(from);
-  // Exploring the classes directly (one representative each) is sound because states of a
-  // class have successors of the same classes: what `canonical` resets nothing reads again.
-  // It keeps one store instead of the reachable states and their representatives.
   checker::ExploreHooks hooks;
   hooks.canonical = [this](Word* w) {
     tioa::State state(w, 0);
     canonical(state);
   };
-  checker::Exploration ex = checker::explore(generator, from.start(), o, hooks);
-  complete_ = ex.complete();
-  known_ = std::make_shared<checker::StateStore>(std::move(ex.store));
+  if (stop_at)
+    hooks.target = [&stop_at](const Word* w) { return stop_at(tioa::State(w, 0)); };
+  ex_ = std::make_shared<checker::Exploration>(checker::explore(generator, from.start(), o, hooks));
+}
+
+tioa::Automaton KnownLmc::from_family(const tioa::Automaton& layer) const {
+  return tioa::Start(layer, family_.start(layer, "the reset family with every combination of "
+                                                 "failed nodes"));
 }
 
 bool KnownLmc::contains(const tioa::State& s) const {
@@ -71,7 +71,7 @@ bool KnownLmc::contains(const tioa::State& s) const {
   copy.assign(s.words(), s.words() + words_);
   tioa::State state(copy.data(), 0);
   canonical(state);
-  return known_->find(copy.data(), checker::hash_state(copy.data(), words_)).has_value();
+  return ex_->store.find(copy.data(), checker::hash_state(copy.data(), words_)).has_value();
 }
 
 std::vector<Word> KnownLmc::representative(const tioa::State& s) const {

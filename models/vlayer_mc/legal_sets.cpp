@@ -2,6 +2,7 @@
 
 #include "checker/explorer.hpp"
 #include "checker/trace.hpp"
+#include "models/vlayer_mc/known_lmc.hpp"
 #include "models/vlayer_mc/lmc.hpp"
 #include "models/vlayer_mc/reset_mc.hpp"
 #include "tioa/operators.hpp"
@@ -203,35 +204,53 @@ PropertyResult check_reset_in_l1mc(const VlConfig& c, const tioa::Automaton& sys
 
 PropertyResult check_lmc_closure(const VlConfig& c, const tioa::Automaton& layer, MWindow window,
                                  const checker::ExploreOptions& options) {
-  const tioa::Automaton from_reset = tioa::Start(layer, reset_family(c, layer));
-  const tioa::SuccessorGenerator generator(from_reset);
   const ClauseCheck clauses = l1mc_clauses(c, layer, window);
-  checker::ExploreHooks hooks;
-  hooks.target = [&](const Word* s) { return !clauses(tioa::State(s, 0)).empty(); };
-  const checker::Exploration ex = checker::explore(generator, from_reset.start(), options, hooks);
+  // L1MC reads no variable the classes ignore (failed nodes' variables, empty slots; the
+  // velocity only as a vector, D27), so a class is inside L1MC iff its representative is.
+  const KnownLmc lmc(c, layer, options, [&](const tioa::State& s) { return !clauses(s).empty(); });
+  const checker::Exploration& ex = lmc.exploration();
+  const tioa::Automaton from = lmc.from_family(layer);
+  const tioa::SuccessorGenerator generator(from);
 
   PropertyResult r = checker::result_of("legal-set", ex, generator);
-  r.figures.emplace_back("covered", "LMC from the " + describe_reset_family(c) +
-                                        ": every state reachable from them (" +
-                                        count(ex.store.size()) +
-                                        " states), closed by construction under the steps and "
-                                        "ticks explored; checked: each is in L1MC and has a "
-                                        "successor");
-  if (ex.found) {
-    closure_counterexample(r, generator, ex, clauses, "reachable from a ResetMC state");
-    r.message = "LMC is not inside L1MC: " + r.message;
+  r.figures.emplace_back(
+      "covered", "LMC from the " + describe_reset_family(c) +
+                     ", each with every combination of failed nodes (" + count(lmc.family_size()) +
+                     " states): every state reachable from them, as " + count(ex.store.size()) +
+                     " classes (D29); closed by construction under the steps "
+                     "and ticks explored; checked: each is in L1MC and has "
+                     "a successor");
+  const auto class_trace = [&](checker::StateId id) {
+    const std::vector<Word> wanted = lmc.representative(tioa::State(ex.store.state(id), 0));
+    checker::ExploreHooks hooks;
+    hooks.target = [&](const Word* s) { return lmc.representative(tioa::State(s, 0)) == wanted; };
+    return checker::explore(generator, from.start(), options, hooks);
+  };
+  if (ex.found || (ex.complete() && !ex.stuck.empty())) {
+    // The classes' parents link representatives, which need not replay: the trace comes
+    // from a plain breadth-first search for a state of the same class.
+    const bool outside = ex.found.has_value();
+    const checker::Exploration plain = class_trace(outside ? *ex.found : ex.stuck.front());
+    r.verdict = Verdict::violated;
+    r.trace_role = "counterexample";
+    if (!plain.found) {
+      r.message = outside ? "LMC is not inside L1MC" : "an LMC state has no step and no tick";
+      r.notes.push_back("no trace: the search for a state of the class found stopped on a limit (" +
+                        std::string(checker::describe(plain.stop)) + ")");
+    } else if (outside) {
+      closure_counterexample(r, generator, plain, clauses, "reachable from a ResetMC state");
+      r.message = "LMC is not inside L1MC: " + r.message;
+    } else {
+      r.trace = checker::trace_to(generator, plain, *plain.found);
+      r.trace_kind = "deadlock";
+      r.message = "an LMC state has no step and no tick";
+    }
   } else if (!ex.complete()) {
     mark_incomplete(r, ex, "every LMC state covered is in L1MC");
-  } else if (!ex.stuck.empty()) {
-    r.verdict = Verdict::violated;
-    r.trace = checker::trace_to(generator, ex, ex.stuck.front());
-    r.trace_role = "counterexample";
-    r.trace_kind = "deadlock";
-    r.message = "an LMC state has no step and no tick";
   } else {
     r.verdict = Verdict::holds;
     r.message = "LMC (" + count(ex.store.size()) +
-                " states) is closed under steps and ticks, lies inside L1MC, and never stops";
+                " classes) is closed under steps and ticks, lies inside L1MC, and never stops";
   }
   r.notes.push_back(window_name(window));
   note_round_length(c, r);

@@ -1,5 +1,7 @@
 #include "models/vlayer_mc/reset_mc.hpp"
 
+#include <algorithm>
+
 #include "models/vlayer_mc/names.hpp"
 #include "models/vlayer_mc/rw.hpp"
 #include "models/vlayer_mc/slots.hpp"
@@ -98,6 +100,38 @@ tioa::StatePredicate reset_mc(const VlConfig& config, const tioa::Automaton& lay
                               MWindow window) {
   const ClauseCheck clauses = reset_mc_clauses(config, layer, window);
   return [clauses](const tioa::State& s) { return clauses(s).empty(); };
+}
+
+tioa::StatePredicate reset_mc_or_targetless(const VlConfig& c, const tioa::Automaton& layer,
+                                            MWindow window) {
+  const ClauseCheck clauses = reset_mc_clauses(c, layer, window);
+  struct Client {
+    std::string clause; // "(2) CN_p"
+    tioa::Slot held, x, target, v, since;
+  };
+  std::vector<Client> clients;
+  for (int p = 0; p < c.robots; ++p) {
+    const std::string cn = names::cn_name(p);
+    const auto slot = [&](const std::string& name) { return need_slot(layer, cn + name, "D30"); };
+    clients.push_back({"(2) " + cn, slot(".delay.held"), slot(".cn.x"), slot(".cn.target"),
+                       slot(".cn.v"), slot(".cn.since")});
+  }
+  return [=](const tioa::State& s) {
+    for (const std::string& clause : clauses(s)) {
+      // Only (2) CN_p may be broken, and only by a missing target while the cn-update is due
+      // (clock_p = 0 by (1) and (5); `since` ≥ 1: not yet sent at this instant).
+      const auto cn = std::find_if(clients.begin(), clients.end(),
+                                   [&](const Client& client) { return client.clause == clause; });
+      if (cn == clients.end())
+        return false;
+      const bool targetless = s.code(cn->held) == 0 && !is_bottom(s, cn->x) &&
+                              is_bottom(s, cn->target) && !is_bottom(s, cn->v) &&
+                              value(s, cn->v) == zero_velocity && value(s, cn->since) >= 1;
+      if (!targetless)
+        return false;
+    }
+    return true;
+  };
 }
 
 } // namespace vlayer

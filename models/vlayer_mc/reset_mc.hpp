@@ -23,4 +23,14 @@ ClauseCheck reset_mc_clauses(const VlConfig& config, const tioa::Automaton& laye
 tioa::StatePredicate reset_mc(const VlConfig& config, const tioa::Automaton& layer,
                               MWindow window = MWindow::as_printed);
 
+// D30: ResetMC, or a state that differs from a ResetMC state z only in that some live robots
+// with x_p ≠ ⊥ and v_p = 0 have no target (x*_p = ⊥) while their cn-update is still due at
+// this phase-0 instant (a robot whose VSA sent it nothing last round; finding F6). z is the
+// state with x*_p := x_p. Until the cn-update, which comes before time passes, x*_p is read
+// only through the desired velocity (0 on both sides) and GPSupdate's (4b) test (met by
+// x*_p = x_p); the vcast sets x*_p := ⊥ on both sides. So every execution from such a state
+// is, from its cn-updates on (the same instant), an execution from z: in LMC.
+tioa::StatePredicate reset_mc_or_targetless(const VlConfig& config, const tioa::Automaton& layer,
+                                            MWindow window = MWindow::as_printed);
+
 } // namespace vlayer

@@ -38,8 +38,9 @@ StateList reached_where(const tioa::Automaton& system, const tioa::StatePredicat
 }
 
 const char* const lmc_measure_note =
-    "an execution is counted in LMC from the first state that is in ResetMC or in the known "
-    "part of LMC (D29): an upper bound on the time into LMC, so a time above the bound, or a "
+    "an execution is counted in LMC from the first state that is in ResetMC, or a ResetMC state "
+    "but for targets its due cn-updates overwrite (D30), or in the known part of LMC (D29): an "
+    "upper bound on the time into LMC, so a time above the bound, or a "
     "cycle that never gets there, is reported as not confirmed, not as a counterexample";
 
 std::string describe_known(const KnownLmc& known) {
@@ -144,7 +145,7 @@ PropertyResult check_lemma_7_4(const VlConfig& c, MWindow window, const Arbitrar
   from.data.insert(from.data.end(), arbitrary.data.begin(), arbitrary.data.end());
   const KnownLmc known(c, u.layer, options);
   complete = complete && known.complete();
-  const tioa::StatePredicate reset = reset_mc(c, u.layer, window);
+  const tioa::StatePredicate reset = reset_mc_or_targetless(c, u.layer, window);
   const tioa::StatePredicate in_lmc = [&](const tioa::State& s) {
     return reset(s) || known.contains(s);
   };
@@ -171,7 +172,7 @@ PropertyResult check_theorem_7_5(const VlConfig& c, MWindow window, const Arbitr
   const tioa::Automaton system =
       tioa::Start(u.layer, u.states.start(u.layer, "U(VLNodes) || R(RW || VW || VBcast)"));
   const tioa::StatePredicate in_l1mc = l1mc(c, u.layer, window);
-  const tioa::StatePredicate reset = reset_mc(c, u.layer, window);
+  const tioa::StatePredicate reset = reset_mc_or_targetless(c, u.layer, window);
   const KnownLmc known(c, u.layer, options);
   const tioa::StatePredicate in_lmc = [&](const tioa::State& s) {
     return reset(s) || known.contains(s);

@@ -1,12 +1,14 @@
 // The known part of LMC (models/vlayer_mc/known_lmc.hpp, D29) is explored one class at a
 // time (ExploreHooks::canonical). Cross-check: a plain exploration of the same reset family,
-// with every state mapped to its class afterwards, gives exactly the same classes.
+// with every state mapped to its class afterwards, gives exactly the same classes; and L1MC,
+// which lmc-closure judges on representatives, gives each state its class's verdict.
 #include <catch2/catch.hpp>
 
 #include <set>
 
 #include "checker/explorer.hpp"
 #include "models/vlayer_mc/known_lmc.hpp"
+#include "models/vlayer_mc/l1mc.hpp"
 #include "models/vlayer_mc/lmc.hpp"
 #include "models/vlayer_mc/state_list.hpp"
 #include "models/vlayer_mc/vlayer.hpp"
@@ -44,11 +46,16 @@ void require_same_classes(const vlayer::VlConfig& c) {
   const checker::Exploration ex =
       checker::explore(tioa::SuccessorGenerator(plain), plain.start(), {});
   REQUIRE(ex.complete());
+  const vlayer::ClauseCheck printed = vlayer::l1mc_clauses(c, layer, vlayer::MWindow::as_printed);
+  const vlayer::ClauseCheck closed = vlayer::l1mc_clauses(c, layer, vlayer::MWindow::closed);
   std::set<std::vector<Word>> classes;
   for (checker::StateId id = 0; id < ex.store.size(); ++id) {
     const tioa::State s(ex.store.state(id), 0);
     CHECK(known.contains(s));
-    classes.insert(known.representative(s));
+    const std::vector<Word> r = known.representative(s);
+    classes.insert(r);
+    CHECK(printed(s) == printed(tioa::State(r.data(), 0)));
+    CHECK(closed(s) == closed(tioa::State(r.data(), 0)));
   }
   CHECK(classes.size() == known.size());
   CHECK(ex.store.size() > known.size()); // the classes do merge states

@@ -78,3 +78,97 @@ TEST_CASE("vlayer ResetMC: reset states recur in the smallest instance", "[vlaye
     resets += reset(tioa::State(ex.store.state(id), 0)) ? 1 : 0;
   CHECK(resets == 32);
 }
+
+// D30: a robot that stands without a target while its cn-update is due is not in ResetMC
+// ((2) wants x*_p ≠ ⊥), but it differs from the ResetMC state z with x*_p := x_p only in
+// what the cn-update overwrites: every step from it is a step from z to the same state up to
+// x*_p, and after the vcast the two are the same state.
+TEST_CASE("vlayer ResetMC: a robot without a target whose cn-update is due (D30)", "[vlayer]") {
+  const vlayer::VlConfig c;
+  const auto layer = vlayer::vlayer(c, {.robots = false, .vsas = false});
+  const vlayer::Lattice l = c.lattice();
+  const auto closed = vlayer::MWindow::closed;
+  const auto reset = vlayer::reset_mc(c, layer, closed);
+  const auto relaxed = vlayer::reset_mc_or_targetless(c, layer, closed);
+  const auto holds = [&](const tioa::StatePredicate& p, Words s) {
+    s.push_back(0);
+    return p(tioa::State(s.data(), 0));
+  };
+  Words s(layer.words() + 1, 0);
+  vlayer::placed_start(layer, {l.point(3, 1)}).enumerate(s.data(), 0, [] {});
+  s.resize(layer.words());
+  set(layer, s, "CN_0.cn.x", l.point(3, 1));
+  set(layer, s, "CN_0.cn.clock", 0);
+  set(layer, s, "CN_0.cn.v", vlayer::zero_velocity);
+  set(layer, s, "RW.vel[0]", vlayer::zero_velocity);
+  set(layer, s, "VBcast.reg[0]", 1);
+  REQUIRE(get(layer, s, "CN_0.cn.since") == 1); // the cn-update is due
+  CHECK_FALSE(holds(reset, s));
+  CHECK(holds(relaxed, s));
+
+  Words z = s;
+  set(layer, z, "CN_0.cn.target", l.point(3, 1));
+  CHECK(holds(reset, z));
+  const auto from_s = steps(layer, s), from_z = steps(layer, z);
+  REQUIRE(from_s.size() == from_z.size());
+  for (std::size_t i = 0; i < from_s.size(); ++i) {
+    REQUIRE(from_s[i].label == from_z[i].label);
+    Words up_to_target = from_z[i].state;
+    set(layer, up_to_target, "CN_0.cn.target",
+        get(layer, from_s[i].state, "CN_0.cn.target").value_or(vl_test::bottom));
+    CHECK(up_to_target == from_s[i].state);
+  }
+  const std::string vcast = "vcast_cn_update_0(" + std::to_string(l.point(3, 1)) + ")";
+  CHECK(after(layer, s, vcast) == after(layer, z, vcast));
+
+  Words sent = s; // once the cn-update is sent, no: nothing overwrites x*_p any more
+  set(layer, sent, "CN_0.cn.since", 0);
+  CHECK_FALSE(holds(relaxed, sent));
+  Words moving = s; // nor with a velocity other than 0
+  set(layer, moving, "CN_0.cn.v", vl_test::bottom);
+  CHECK_FALSE(holds(relaxed, moving));
+}
+
+// Finding F6: a robot whose region's VSA has failed gets no target, so at every later round
+// start x*_p = ⊥ and the execution never meets ResetMC again, although it stays in LMC (it
+// started in ResetMC). Lemma 7.4's proof ("we eventually arrive at a state in ResetMC") does
+// not cover it; D30's states do, at every round start.
+TEST_CASE("vlayer ResetMC: finding F6, never ResetMC again under a failed VSA", "[vlayer]") {
+  const vlayer::VlConfig c;
+  const auto layer = vlayer::vlayer(c, {.robots = false, .vsas = false});
+  const vlayer::Lattice l = c.lattice();
+  const auto closed = vlayer::MWindow::closed;
+  Words z(layer.words() + 1, 0);
+  vlayer::placed_start(layer, {l.point(3, 1)}).enumerate(z.data(), 0, [] {});
+  z.resize(layer.words());
+  for (const auto& [name, value] :
+       std::vector<std::pair<std::string, std::int64_t>>{{"CN_0.cn.x", l.point(3, 1)},
+                                                         {"CN_0.cn.target", l.point(3, 1)},
+                                                         {"CN_0.cn.clock", 0},
+                                                         {"CN_0.cn.v", vlayer::zero_velocity},
+                                                         {"RW.vel[0]", vlayer::zero_velocity},
+                                                         {"VBcast.reg[0]", 1},
+                                                         {"VN_0.clock", 0},
+                                                         {"VN_1.failed", 1}})
+    set(layer, z, name, value);
+  const auto system =
+      tioa::Start(layer, tioa::StartSet::listed(layer.layout().bits(), layer.words(), z, "z"));
+  const auto ex = checker::explore(tioa::SuccessorGenerator(system), system.start(), {});
+  REQUIRE(ex.complete());
+  const auto reset = vlayer::reset_mc(c, layer, closed);
+  const auto relaxed = vlayer::reset_mc_or_targetless(c, layer, closed);
+  std::size_t resets = 0, targetless = 0;
+  for (checker::StateId id = 0; id < ex.store.size(); ++id) {
+    const tioa::State state(ex.store.state(id), 0);
+    if (reset(state)) { // only at instant 0: z, before and after VW's time updates
+      ++resets;
+      Words w(ex.store.state(id), ex.store.state(id) + layer.words());
+      for (const auto& v : layer.layout().variables())
+        if (v.name.rfind("VW.age", 0) != 0)
+          CHECK(get(layer, w, v.name) == get(layer, z, v.name));
+    }
+    targetless += relaxed(state) && !reset(state) ? 1 : 0;
+  }
+  CHECK(resets == 4);     // VW.age[0], VW.age[1] each 0 or 1
+  CHECK(targetless == 4); // at the later round starts, before and after the time updates
+}
