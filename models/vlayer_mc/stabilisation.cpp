@@ -44,7 +44,8 @@ const char* const lmc_measure_note =
     "cycle that never gets there, is reported as not confirmed, not as a counterexample";
 
 std::string describe_known(const KnownLmc& known) {
-  return count(known.size()) + " states reachable from " + count(known.family_size()) +
+  return count(known.size()) + " classes (D29) of the states reachable from " +
+         count(known.family_size()) +
          " ResetMC states (the reset family with every combination of failed nodes)" +
          (known.complete() ? "" : ", stopped on a limit");
 }
