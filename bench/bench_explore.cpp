@@ -55,11 +55,10 @@ int main(int argc, char** argv) {
             : std::vector<std::pair<int, int>>{{7, 6}, {8, 7}, {9, 6}, {10, 5}};
   for (auto [n, k] : rings)
     run("token-ring N=" + std::to_string(n) + " K=" + std::to_string(k),
-        models::build_token_ring(n, k).system, threads);
+        token_ring::build(n, k).system, threads);
   const int max_fischer = quick ? 5 : 7;
   for (int n = 4; n <= max_fischer; ++n)
-    run("fischer N=" + std::to_string(n) + " A=1 B=2", models::build_fischer(n, 1, 2).system,
-        threads);
+    run("fischer N=" + std::to_string(n) + " A=1 B=2", fischer::build(n, 1, 2).system, threads);
   // The scenarios of seed 004 with three and four robots; pinwheel is the one the suite
   // leaves to a unit test.
   const std::vector<const char*> scenarios =

@@ -21,9 +21,9 @@
 #include <string>
 #include <vector>
 
+#include "catalogue/registry.hpp"
+#include "catalogue/vlayer_mc.hpp"
 #include "checker/property.hpp"
-#include "models/registry.hpp"
-#include "models/vlayer_mc/vlayer_model.hpp"
 
 namespace {
 
@@ -144,8 +144,8 @@ struct Settings {
 // Runs one case in this process and prints its row. Exit code: 0 as pinned (or not pinned, or
 // incomplete), 1 a count or verdict differs from the pin, 3 incomplete.
 int run_case(const Case& c, const Settings& settings) {
-  const models::ModelDefinition def = models::vlayer_mc_definition();
-  const models::ModelInstance m = def.build(models::resolve_params(def, settings_of(c)));
+  const catalogue::ModelDefinition def = catalogue::vlayer_mc_definition();
+  const catalogue::ModelInstance m = def.build(catalogue::resolve_params(def, settings_of(c)));
   checker::ExploreOptions options;
   options.threads = settings.threads;
   options.limits.max_seconds = settings.limit_seconds;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "checker/page_buffer.hpp"
+#include "tioa/state_hash.hpp"
 #include "tioa/variables.hpp"
 
 namespace checker {
@@ -20,17 +21,7 @@ namespace checker {
 using tioa::Word;
 using StateId = std::uint32_t;
 
-// A multiply-xorshift hash over the words, finished with the SplitMix64 mixer.
-inline std::uint64_t hash_state(const Word* state, std::uint32_t words) {
-  std::uint64_t h = 0x243f6a8885a308d3ull;
-  for (std::uint32_t i = 0; i < words; ++i)
-    h = (h ^ (h >> 31) ^ state[i]) * 0x9e3779b97f4a7c15ull;
-  h ^= h >> 30;
-  h *= 0xbf58476d1ce4e5b9ull;
-  h ^= h >> 27;
-  h *= 0x94d049bb133111ebull;
-  return h ^ (h >> 31);
-}
+using tioa::hash_state; // tioa/state_hash.hpp
 
 class StateStore {
 public:

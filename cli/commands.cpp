@@ -15,15 +15,15 @@ namespace cli {
 namespace {
 
 struct Built {
-  const models::ModelDefinition* definition;
-  models::ParamValues values;
-  models::ModelInstance instance;
+  const catalogue::ModelDefinition* definition;
+  catalogue::ParamValues values;
+  catalogue::ModelInstance instance;
 };
 
 Built build(const ModelRequest& request) {
-  const models::ModelDefinition& definition = models::find_model(request.model);
-  models::ParamValues values = models::resolve_params(definition, request.param_settings);
-  models::ModelInstance instance = definition.build(values);
+  const catalogue::ModelDefinition& definition = catalogue::find_model(request.model);
+  catalogue::ParamValues values = catalogue::resolve_params(definition, request.param_settings);
+  catalogue::ModelInstance instance = definition.build(values);
   return {&definition, std::move(values), std::move(instance)};
 }
 
@@ -48,13 +48,13 @@ int report(const ModelRun& run, const RunSettings& settings, std::optional<std::
     write_junit(*junit, {junit_suite(run, settings.trace)});
     junit->close();
     if (!*junit)
-      throw models::UsageError("cannot write the report file '" + settings.junit_path + "'");
+      throw catalogue::UsageError("cannot write the report file '" + settings.junit_path + "'");
   }
   if (html) {
     write_html(*html, run_json(run, true));
     html->close();
     if (!*html)
-      throw models::UsageError("cannot write the HTML file '" + settings.html_path + "'");
+      throw catalogue::UsageError("cannot write the HTML file '" + settings.html_path + "'");
   }
   return exit_status(run.results);
 }
@@ -76,7 +76,7 @@ int command_check(const ModelRequest& request, const RunSettings& settings) {
 int command_explore(const ModelRequest& request, const std::string& from,
                     const RunSettings& settings) {
   if (from != "arbitrary" && from != "start")
-    throw models::UsageError("--from must be 'arbitrary' or 'start', not '" + from + "'");
+    throw catalogue::UsageError("--from must be 'arbitrary' or 'start', not '" + from + "'");
   const Built built = build(request);
   std::vector<const checker::Property*> properties;
   for (const checker::Property* p :
@@ -84,9 +84,9 @@ int command_explore(const ModelRequest& request, const std::string& from,
     if (p->kind == checker::PropertyKind::invariant)
       properties.push_back(p);
     else if (!request.properties.empty())
-      throw models::UsageError("explore checks invariants only: property '" + p->name +
-                               "' of model '" + request.model + "' is a " +
-                               checker::to_string(p->kind) + " property (use check)");
+      throw catalogue::UsageError("explore checks invariants only: property '" + p->name +
+                                  "' of model '" + request.model + "' is a " +
+                                  checker::to_string(p->kind) + " property (use check)");
   }
   const tioa::Automaton system =
       from == "arbitrary" ? tioa::U(built.instance.system) : built.instance.system;

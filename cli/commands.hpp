@@ -1,6 +1,6 @@
 #pragma once
 // The four commands of tioa-check. Each returns the process exit code (exit_status.hpp)
-// and throws models::UsageError or tioa::ModelError on bad input.
+// and throws catalogue::UsageError or tioa::ModelError on bad input.
 
 #include <string>
 

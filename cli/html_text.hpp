@@ -5,12 +5,12 @@
 #include <string>
 #include <string_view>
 
-#include "checker/xml_escape.hpp"
+#include "support/xml_escape.hpp"
 
 namespace cli {
 
 inline std::string html_text(std::string_view text) {
-  return checker::xml_escape(text);
+  return support::xml_escape(text);
 }
 
 } // namespace cli

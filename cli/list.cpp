@@ -3,11 +3,11 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "catalogue/registry.hpp"
 #include "cli/commands.hpp"
 #include "cli/exit_status.hpp"
 #include "cli/output.hpp"
 #include "cli/report_text.hpp"
-#include "models/registry.hpp"
 
 namespace cli {
 
@@ -15,13 +15,13 @@ namespace {
 
 Json list_json() {
   Json models = Json::array();
-  for (const auto& def : models::all_models()) {
+  for (const auto& def : catalogue::all_models()) {
     Json params = Json::array();
     for (const auto& p : def.params) {
-      const bool choice = p.kind == models::ParamKind::choice;
-      const bool number = !choice && p.kind != models::ParamKind::text;
+      const bool choice = p.kind == catalogue::ParamKind::choice;
+      const bool number = !choice && p.kind != catalogue::ParamKind::text;
       Json param{{"name", p.name},
-                 {"kind", models::to_string(p.kind)},
+                 {"kind", catalogue::to_string(p.kind)},
                  {"default", param_json(p.default_value)},
                  {"lo", number ? param_json(p.lo) : Json()}, // null: no bounds
                  {"hi", number ? param_json(p.hi) : Json()},
@@ -44,17 +44,19 @@ Json list_json() {
 
 void print_list_text() {
   bool first = true;
-  for (const auto& def : models::all_models()) {
+  for (const auto& def : catalogue::all_models()) {
     if (!first)
       std::cout << '\n';
     first = false;
     std::cout << def.name << ": " << def.description << '\n';
     // A choice shows "choice" in the range column and its names on the next line, so that
     // a long list does not widen the column.
-    auto range = [](const models::ParamSpec& p) {
-      return p.kind == models::ParamKind::choice ? std::string("choice") : p.range();
+    auto range = [](const catalogue::ParamSpec& p) {
+      return p.kind == catalogue::ParamKind::choice ? std::string("choice") : p.range();
     };
-    auto default_value = [](const models::ParamSpec& p) { return format_value(p.default_value); };
+    auto default_value = [](const catalogue::ParamSpec& p) {
+      return format_value(p.default_value);
+    };
     std::size_t name_width = 0, default_width = 0, range_width = 0;
     for (const auto& p : def.params) {
       name_width = std::max(name_width, p.name.size());
@@ -66,7 +68,7 @@ void print_list_text() {
       std::cout << fmt::format("    {:<{}}  default {:<{}}  range {:<{}}  {}\n", p.name, name_width,
                                default_value(p), default_width, range(p), range_width,
                                p.description);
-      if (p.kind == models::ParamKind::choice)
+      if (p.kind == catalogue::ParamKind::choice)
         std::cout << fmt::format("    {:<{}}  one of: {}\n", "", name_width,
                                  fmt::join(p.choices, ", "));
     }

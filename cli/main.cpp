@@ -12,11 +12,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "catalogue/registry.hpp"
 #include "cli/commands.hpp"
 #include "cli/exit_status.hpp"
 #include "cli/round.hpp"
 #include "cli/simulate.hpp"
-#include "models/registry.hpp"
 #include "tioa/errors.hpp"
 
 namespace {
@@ -83,7 +83,7 @@ void add_model_options(CLI::App* command, cli::ModelRequest& request) {
       ->add_option("-p,--param", request.param_settings,
                    "a parameter setting name=value (repeatable; or name=value,name=value)")
       ->type_name("NAME=VALUE")
-      ->allow_extra_args(false); // split by models::split_settings, not at every comma
+      ->allow_extra_args(false); // split by catalogue::split_settings, not at every comma
   command->add_option("--prop", request.properties, "a property to check (repeatable)")
       ->type_name("NAME")
       ->allow_extra_args(false)
@@ -203,7 +203,7 @@ int main(int argc, char** argv) {
     return fail("a command is required: list, check, explore, suite, round or simulate");
   }
 
-  request.param_settings = models::split_settings(request.param_settings);
+  request.param_settings = catalogue::split_settings(request.param_settings);
   settings.limits.max_states = limits.max_states;
   settings.limits.max_seconds = limits.max_seconds;
   if (limits.max_memory_mib > (std::numeric_limits<std::uint64_t>::max() >> 20))
@@ -225,7 +225,7 @@ int main(int argc, char** argv) {
     if (simulate->parsed())
       return cli::command_simulate(simulate_request);
     return cli::command_suite(settings, suite_models);
-  } catch (const models::UsageError& e) {
+  } catch (const catalogue::UsageError& e) {
     return fail(e.what());
   } catch (const tioa::ModelError& e) {
     return fail(std::string("model error: ") + e.what());

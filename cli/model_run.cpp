@@ -4,8 +4,8 @@
 
 namespace cli {
 
-OrderedParams ordered_params(const models::ModelDefinition& model,
-                             const models::ParamValues& values) {
+OrderedParams ordered_params(const catalogue::ModelDefinition& model,
+                             const catalogue::ParamValues& values) {
   OrderedParams out;
   for (const auto& spec : model.params)
     if (const auto it = values.find(spec.name); it != values.end())
@@ -13,7 +13,7 @@ OrderedParams ordered_params(const models::ModelDefinition& model,
   return out;
 }
 
-std::vector<std::string> param_settings(const models::ParamValues& values) {
+std::vector<std::string> param_settings(const catalogue::ParamValues& values) {
   std::vector<std::string> settings;
   for (const auto& [name, value] : values)
     settings.push_back(name + "=" + value.text());
@@ -28,7 +28,7 @@ checker::ExploreOptions explore_options(const RunSettings& settings) {
   return options;
 }
 
-std::vector<const checker::Property*> select_properties(const models::ModelInstance& instance,
+std::vector<const checker::Property*> select_properties(const catalogue::ModelInstance& instance,
                                                         const std::string& model,
                                                         const std::vector<std::string>& names) {
   std::vector<const checker::Property*> selected;
@@ -44,8 +44,8 @@ std::vector<const checker::Property*> select_properties(const models::ModelInsta
       std::string known;
       for (const auto& p : instance.properties)
         known += (known.empty() ? "" : ", ") + p.name;
-      throw models::UsageError("model '" + model + "' has no property '" + name +
-                               "' (it has: " + known + ")");
+      throw catalogue::UsageError("model '" + model + "' has no property '" + name +
+                                  "' (it has: " + known + ")");
     }
     if (std::find(selected.begin(), selected.end(), &*it) == selected.end())
       selected.push_back(&*it);

@@ -7,15 +7,15 @@
 #include <utility>
 #include <vector>
 
+#include "catalogue/registry.hpp"
 #include "checker/property.hpp"
 #include "cli/settings.hpp"
-#include "models/registry.hpp"
 #include "tioa/variables.hpp"
 
 namespace cli {
 
 // Parameter values in the model's declaration order.
-using OrderedParams = std::vector<std::pair<std::string, models::ParamValue>>;
+using OrderedParams = std::vector<std::pair<std::string, catalogue::ParamValue>>;
 
 struct ModelRun {
   std::string model;
@@ -26,17 +26,17 @@ struct ModelRun {
   std::vector<checker::PropertyResult> results;
 };
 
-OrderedParams ordered_params(const models::ModelDefinition& model,
-                             const models::ParamValues& values);
+OrderedParams ordered_params(const catalogue::ModelDefinition& model,
+                             const catalogue::ParamValues& values);
 
 // "name=value" settings for resolve_params, from a suite entry's values.
-std::vector<std::string> param_settings(const models::ParamValues& values);
+std::vector<std::string> param_settings(const catalogue::ParamValues& values);
 
 checker::ExploreOptions explore_options(const RunSettings& settings);
 
 // The properties named in `names` (every property when empty), in the order asked, each
 // once; a UsageError names an unknown one and lists the known ones.
-std::vector<const checker::Property*> select_properties(const models::ModelInstance& instance,
+std::vector<const checker::Property*> select_properties(const catalogue::ModelInstance& instance,
                                                         const std::string& model,
                                                         const std::vector<std::string>& names);
 

@@ -2,7 +2,7 @@
 
 #include <iostream>
 
-#include "models/registry.hpp"
+#include "catalogue/registry.hpp"
 
 namespace cli {
 
@@ -15,7 +15,7 @@ std::optional<std::ofstream> open_report_file(const std::string& path) {
     return std::nullopt;
   std::ofstream file(path, std::ios::out | std::ios::trunc);
   if (!file)
-    throw models::UsageError("cannot write the report file '" + path + "'");
+    throw catalogue::UsageError("cannot write the report file '" + path + "'");
   return file;
 }
 

@@ -42,15 +42,15 @@ int param(const Json& params, const char* name, int fallback) {
 }
 
 struct Canvas {
-  const vlayer::Lattice& lattice;
+  const vlayer_mc::Lattice& lattice;
   int scale;
   int margin = 24;
-  double x(vlayer::Point p) const { return margin + lattice.x_of(p) * scale; }
-  double y(vlayer::Point p) const { return margin + lattice.y_of(p) * scale; }
-  vlayer::Point centre(vlayer::RegionId u) const { return lattice.centre(u); }
+  double x(vlayer_mc::Point p) const { return margin + lattice.x_of(p) * scale; }
+  double y(vlayer_mc::Point p) const { return margin + lattice.y_of(p) * scale; }
+  vlayer_mc::Point centre(vlayer_mc::RegionId u) const { return lattice.centre(u); }
 };
 
-std::string point_text(const vlayer::Lattice& lattice, long p) {
+std::string point_text(const vlayer_mc::Lattice& lattice, long p) {
   if (p < 0 || p >= lattice.points())
     return std::to_string(p);
   const int point = static_cast<int>(p);
@@ -73,7 +73,7 @@ void write_vlayer_picture(std::ostream& out, const Json& params, const Json& sta
   const int b = param(params, "b", 2), robots = param(params, "robots", 1);
   const auto nbh =
       param(params, "nbh", 4) == 8 ? mc::Neighbourhood::eight : mc::Neighbourhood::four;
-  const vlayer::Lattice lattice(rows, cols, b, nbh);
+  const vlayer_mc::Lattice lattice(rows, cols, b, nbh);
   const Canvas canvas{lattice, std::max(16, 320 / std::max(cols * b, rows * b))};
   const int width = 2 * canvas.margin + cols * b * canvas.scale;
   const int height = 2 * canvas.margin + rows * b * canvas.scale;
@@ -120,7 +120,7 @@ void write_vlayer_picture(std::ostream& out, const Json& params, const Json& sta
     if (flag(state, indexed("VBcast.cn_pending", p))) {
       const auto at = number(state, indexed("VBcast.cn_loc", p));
       if (at && loc && *at >= 0 && *at < lattice.points()) {
-        const vlayer::Point to = lattice.centre(lattice.region_of(static_cast<int>(*at)));
+        const vlayer_mc::Point to = lattice.centre(lattice.region_of(static_cast<int>(*at)));
         arrow(out, canvas.x(static_cast<int>(*loc)), canvas.y(static_cast<int>(*loc)), canvas.x(to),
               canvas.y(to), "cn-update", head);
       }
@@ -136,7 +136,7 @@ void write_vlayer_picture(std::ostream& out, const Json& params, const Json& sta
       std::string to;
       for (std::size_t i = 0; i < nbrs.size(); ++i)
         if ((*mask >> i) & 1) {
-          const vlayer::Point from = lattice.centre(u), target = lattice.centre(nbrs[i]);
+          const vlayer_mc::Point from = lattice.centre(u), target = lattice.centre(nbrs[i]);
           arrow(out, canvas.x(from), canvas.y(from) + 6, canvas.x(target), canvas.y(target) + 6,
                 "vn-update", head);
           to += (to.empty() ? "" : ", ") + std::to_string(nbrs[i]);
@@ -150,7 +150,7 @@ void write_vlayer_picture(std::ostream& out, const Json& params, const Json& sta
       if (!flag(state, indexed("VBcast.tu_pending", slot)))
         continue;
       const auto loc = number(state, indexed("RW.loc", p));
-      const vlayer::Point from = lattice.centre(u);
+      const vlayer_mc::Point from = lattice.centre(u);
       if (loc && *loc >= 0 && *loc < lattice.points())
         arrow(out, canvas.x(from), canvas.y(from) - 6, canvas.x(static_cast<int>(*loc)),
               canvas.y(static_cast<int>(*loc)) - 6, "target-update", head);

@@ -97,7 +97,7 @@ Json property_json(const ModelRun& run, const checker::PropertyResult& r, bool w
   return out;
 }
 
-Json param_json(const models::ParamValue& value) {
+Json param_json(const catalogue::ParamValue& value) {
   if (!value.is_number()) // a choice or a text
     return value.text();
   if (value.whole())

@@ -19,7 +19,7 @@ Json trace_json(const tioa::StateLayout& layout, const checker::PropertyResult& 
 Json property_json(const ModelRun& run, const checker::PropertyResult& result, bool with_trace);
 
 // A whole number as a JSON number, a fraction as a string ("9/10").
-Json param_json(const models::ParamValue& value);
+Json param_json(const catalogue::ParamValue& value);
 Json params_json(const OrderedParams& params);
 
 // {"model", "params", ("from",) "properties": [...]}

@@ -1,6 +1,6 @@
 #include "cli/report_junit.hpp"
 
-#include "checker/xml_escape.hpp"
+#include "support/xml_escape.hpp"
 
 #include <ostream>
 #include <sstream>
@@ -12,7 +12,7 @@
 namespace cli {
 
 std::string xml_escape(const std::string& text, bool attribute) {
-  return checker::xml_escape(text, attribute);
+  return support::xml_escape(text, attribute);
 }
 
 void write_junit(std::ostream& out, const std::vector<JunitSuite>& suites) {

@@ -54,7 +54,7 @@ std::string format_params(const OrderedParams& params) {
   return text;
 }
 
-std::string format_value(const models::ParamValue& value) {
+std::string format_value(const catalogue::ParamValue& value) {
   return value.is_text() && value.text().empty() ? "\"\"" : value.text();
 }
 

@@ -14,7 +14,7 @@ namespace cli {
 std::string format_params(const OrderedParams& params);
 
 // The value as text; an empty text as "", so that it is seen.
-std::string format_value(const models::ParamValue& value);
+std::string format_value(const catalogue::ParamValue& value);
 
 // "24 steps", or "-" when the run measured no worst time.
 std::string format_worst_time(const checker::PropertyResult& result);

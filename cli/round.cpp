@@ -9,14 +9,14 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "catalogue/registry.hpp"
 #include "cli/exit_status.hpp"
-#include "models/registry.hpp"
 
 namespace cli {
 
 namespace {
 
-using models::UsageError;
+using catalogue::UsageError;
 using Input = nlohmann::json;
 
 constexpr int max_side = 50; // m: the grid keeps m⁴ distances; the paper's runs use m <= 20
@@ -49,7 +49,7 @@ mc::Rational rational(const Input& root, const std::string& source, const char* 
     bad(source, std::string("field '") + name +
                     "' must be a string holding an exact rational like \"9/10\", not " +
                     value.dump());
-  const auto parsed = mc::parse_rational(value.get<std::string>());
+  const auto parsed = support::parse_rational(value.get<std::string>());
   if (!parsed)
     bad(source, std::string("field '") + name + "': '" + value.get<std::string>() +
                     "' is not a rational like 9/10, 1/2 or 0.9");

@@ -25,11 +25,11 @@ struct RoundConfig {
   mc::Counts robots;
 };
 
-// Throws models::UsageError (one line, naming `source` and the field) on anything wrong.
+// Throws catalogue::UsageError (one line, naming `source` and the field) on anything wrong.
 RoundConfig read_round_config(std::istream& in, const std::string& source);
 
 // Exit codes: 0 done; 3 no fixed point within max_rounds (one line on stderr). Throws
-// models::UsageError on a bad configuration.
+// catalogue::UsageError on a bad configuration.
 int command_round(const RoundRequest& request);
 
 } // namespace cli

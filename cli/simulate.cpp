@@ -11,16 +11,16 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "catalogue/registry.hpp"
 #include "cli/exit_status.hpp"
 #include "models/mc/curve_local.hpp"
 #include "models/mc/simulation.hpp"
-#include "models/registry.hpp"
 
 namespace cli {
 
 namespace {
 
-using models::UsageError;
+using catalogue::UsageError;
 using Json = nlohmann::ordered_json;
 
 constexpr int max_side = 50; // as `round`; the paper's runs use m <= 20
@@ -30,7 +30,7 @@ constexpr const char* claim_text =
     "then the stabilization time T_stab is dominated by T_out\"";
 
 mc::Rational rational_option(const std::string& option, const std::string& text) {
-  const auto value = mc::parse_rational(text);
+  const auto value = support::parse_rational(text);
   if (!value)
     throw UsageError(option + ": '" + text + "' is not a rational like 9/10, 1/4 or 0.25");
   return *value;

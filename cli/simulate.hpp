@@ -33,7 +33,7 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateRequest& request);
 
 // Exit codes: 0 done (the claim holds, or C2 is not in the sweep); 1 the claim about C2 does
 // not hold; 3 a run did not reach its fixed point within --max-rounds (one line on stderr).
-// Throws models::UsageError on bad values (one line).
+// Throws catalogue::UsageError on bad values (one line).
 int command_simulate(const SimulateRequest& request);
 
 } // namespace cli

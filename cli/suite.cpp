@@ -21,9 +21,9 @@ namespace cli {
 namespace {
 
 struct SuiteRow {
-  const models::ModelDefinition* definition = nullptr;
-  const models::SuiteEntry* entry = nullptr;
-  models::ParamValues values;
+  const catalogue::ModelDefinition* definition = nullptr;
+  const catalogue::SuiteEntry* entry = nullptr;
+  catalogue::ParamValues values;
   ModelRun run;             // one result: this entry's property
   std::string shown_params; // the table's column: what the entry sets (see shown_params)
 
@@ -38,7 +38,7 @@ struct Columns {
 // The table names only the parameters the entry sets; the others are at their defaults
 // (`tioa-check list`), so a row still reads as a command line that repeats it. The JSON
 // and JUnit reports name every parameter.
-std::string shown_params(const OrderedParams& all, const models::ParamValues& set) {
+std::string shown_params(const OrderedParams& all, const catalogue::ParamValues& set) {
   OrderedParams shown;
   for (const auto& param : all)
     if (set.count(param.first) != 0)
@@ -100,18 +100,18 @@ Json suite_json(const std::vector<SuiteRow>& rows, bool all_as_expected) {
 int command_suite(const RunSettings& settings, const std::vector<std::string>& only) {
   const auto started = std::chrono::steady_clock::now();
   for (const std::string& name : only)
-    models::find_model(name); // an unknown model is a usage error, before anything runs
+    catalogue::find_model(name); // an unknown model is a usage error, before anything runs
   // Resolve every entry first: a bad entry is reported before anything runs.
   std::vector<SuiteRow> rows;
   Columns columns;
-  for (const auto& def : models::all_models())
+  for (const auto& def : catalogue::all_models())
     for (const auto& entry : def.suite) {
       if (!only.empty() && std::find(only.begin(), only.end(), def.name) == only.end())
         continue;
       SuiteRow row;
       row.definition = &def;
       row.entry = &entry;
-      row.values = models::resolve_params(def, param_settings(entry.params));
+      row.values = catalogue::resolve_params(def, param_settings(entry.params));
       row.run.model = def.name;
       row.run.params = ordered_params(def, row.values);
       columns.model = std::max(columns.model, def.name.size());
@@ -125,13 +125,13 @@ int command_suite(const RunSettings& settings, const std::vector<std::string>& o
   if (!settings.json)
     print_header(columns);
   const checker::ExploreOptions options = explore_options(settings);
-  std::map<std::pair<std::string, models::ParamValues>, models::ModelInstance> instances;
+  std::map<std::pair<std::string, catalogue::ParamValues>, catalogue::ModelInstance> instances;
   for (auto& row : rows) {
     auto key = std::make_pair(row.definition->name, row.values);
     auto it = instances.find(key);
     if (it == instances.end())
       it = instances.emplace(key, row.definition->build(row.values)).first;
-    const models::ModelInstance& instance = it->second;
+    const catalogue::ModelInstance& instance = it->second;
     const auto properties =
         select_properties(instance, row.definition->name, {row.entry->property});
     row.run.quantum = instance.quantum;
@@ -162,7 +162,7 @@ int command_suite(const RunSettings& settings, const std::vector<std::string>& o
     write_junit(*junit, junit_suites(rows));
     junit->close();
     if (!*junit)
-      throw models::UsageError("cannot write the report file '" + settings.junit_path + "'");
+      throw catalogue::UsageError("cannot write the report file '" + settings.junit_path + "'");
   }
   return all_as_expected ? all_hold : some_violated;
 }

@@ -14,7 +14,9 @@ werror=OFF
 if [ "${1:-}" = "--sanitize" ]; then
   cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DTIOA_SANITIZE=ON -DTIOA_WERROR=$werror
   cmake --build build-asan --target unit_tests
-  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 build-asan/tests/unit_tests
+  for tests in support tioa checker models proofs catalogue; do
+    ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 build-asan/tests/${tests}_tests
+  done
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DTIOA_WERROR=$werror

@@ -2,11 +2,15 @@
 // Fischer's mutual exclusion protocol in discrete time, exactly as
 // ../shared/peer-models.md (b).
 
-#include "models/registry.hpp"
+#include "tioa/automaton.hpp"
 
-namespace models {
+namespace fischer {
 
-ModelInstance build_fischer(int n, int a, int b);
-ModelDefinition fischer_definition();
+struct Fischer {
+  tioa::Automaton system;
+  tioa::StatePredicate at_most_one_in_cs; // mutual exclusion
+};
 
-} // namespace models
+Fischer build(int n, int a, int b);
+
+} // namespace fischer

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "models/mc/curve_exact.hpp"
+#include "models/mc/curve_numbers.hpp"
 
 namespace mc {
 

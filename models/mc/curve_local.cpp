@@ -5,7 +5,7 @@
 
 #include <boost/math/constants/constants.hpp>
 
-#include "models/mc/curve_exact.hpp"
+#include "models/mc/curve_numbers.hpp"
 
 namespace mc {
 

@@ -9,7 +9,7 @@
 //   b. assign: the Flow of RoundSystem on those counts (default order; q from the curve);
 //   c. which robots each VN_h reassigns (line 11 "reassigning ra nodes from h to g" does
 //      not say): a rule (Reassignment);
-//   d. calctarget (Fig. 7 lines 26–38) per VN_h, exactly (models/mc/exact_curve.hpp);
+//   d. calctarget (Fig. 7 lines 26–38) per VN_h, exactly (models/mc/exact_local_curve.hpp);
 //   e. every robot reaches its target within the round (the round length δ is chosen
 //      so, seed 002 §V-B).
 //
@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "models/mc/exact_curve.hpp"
+#include "models/mc/exact_local_curve.hpp"
 #include "models/mc/round.hpp"
 
 namespace mc {

@@ -1,6 +1,6 @@
 #include "models/mc/simulation.hpp"
 
-#include "checker/xml_escape.hpp"
+#include "support/xml_escape.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -186,7 +186,7 @@ std::string simulation_csv(const std::vector<SimulationResult>& results) {
 namespace {
 
 std::string escape(std::string_view text) {
-  return checker::xml_escape(text);
+  return support::xml_escape(text);
 }
 
 // A round step for axis ticks: 1, 2 or 5 times a power of ten, about range/ticks.

@@ -1,11 +1,17 @@
 #pragma once
 // Dijkstra's K-state self-stabilising token ring, exactly as ../shared/peer-models.md (a).
 
-#include "models/registry.hpp"
+#include <functional>
 
-namespace models {
+#include "tioa/automaton.hpp"
 
-ModelInstance build_token_ring(int n, int k);
-ModelDefinition token_ring_definition();
+namespace token_ring {
 
-} // namespace models
+struct TokenRing {
+  tioa::Automaton system;                            // U(ring): every state is a start state
+  std::function<int(const tioa::State&)> privileges; // how many processes are privileged
+};
+
+TokenRing build(int n, int k);
+
+} // namespace token_ring

@@ -3,7 +3,7 @@
 #include "models/vlayer_mc/names.hpp"
 #include "models/vlayer_mc/rw.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 using tioa::Params;
 using tioa::State;
@@ -88,4 +88,4 @@ tioa::Automaton cn(const VlConfig& c, int p) {
   return a;
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

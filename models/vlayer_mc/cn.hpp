@@ -20,8 +20,8 @@
 #include "models/vlayer_mc/config.hpp"
 #include "tioa/automaton.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 tioa::Automaton cn(const VlConfig& config, int p);
 
-} // namespace vlayer
+} // namespace vlayer_mc

@@ -1,6 +1,6 @@
 #include "models/vlayer_mc/config.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 int round_length_bound(const VlConfig& c) {
   const int r = c.lattice().r();
@@ -33,4 +33,4 @@ std::optional<std::string> invalid(const VlConfig& c) {
   return std::nullopt;
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

@@ -8,7 +8,7 @@
 #include "models/mc/rational.hpp"
 #include "models/vlayer_mc/lattice.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 struct VlConfig {
   int rows = 1, cols = 2;
@@ -38,4 +38,4 @@ bool round_length_ok(const VlConfig& config);
 // nullopt. The round-length rule is not checked here: breaking it is a question to ask.
 std::optional<std::string> invalid(const VlConfig& config);
 
-} // namespace vlayer
+} // namespace vlayer_mc

@@ -6,7 +6,7 @@
 #include "models/vlayer_mc/rw.hpp"
 #include "models/vlayer_mc/slots.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 namespace {
 
@@ -114,4 +114,4 @@ tioa::StatePredicate l1mc(const VlConfig& config, const tioa::Automaton& layer, 
   return [clauses](const tioa::State& s) { return clauses(s).empty(); };
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

@@ -24,7 +24,7 @@
 #include "models/vlayer_mc/config.hpp"
 #include "tioa/automaton.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 // The clauses (2)–(4c) that a state breaks, as "(2) VN_1", "(4b) CN_0"; empty when in L1MC
 // (up to clause (1)).
@@ -41,4 +41,4 @@ ClauseCheck l1mc_clauses(const VlConfig& config, const tioa::Automaton& layer,
 tioa::StatePredicate l1mc(const VlConfig& config, const tioa::Automaton& layer,
                           MWindow window = MWindow::as_printed);
 
-} // namespace vlayer
+} // namespace vlayer_mc

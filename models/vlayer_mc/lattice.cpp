@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-namespace vlayer {
+namespace vlayer_mc {
 
 Lattice::Lattice(int rows, int cols, int b, mc::Neighbourhood neighbourhood)
     : rows_(rows), cols_(cols), b_(b), neighbourhood_(neighbourhood) {
@@ -57,4 +57,4 @@ int Lattice::r() const {
   return r == 0 ? b_ : r;
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

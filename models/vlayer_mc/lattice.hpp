@@ -9,7 +9,7 @@
 
 #include "models/mc/grid.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 using Point = int; // index y·width + x of a lattice point
 using RegionId = int;
@@ -56,4 +56,4 @@ private:
   std::vector<std::vector<RegionId>> neighbours_;
 };
 
-} // namespace vlayer
+} // namespace vlayer_mc

@@ -5,7 +5,7 @@
 #include "models/vlayer_mc/names.hpp"
 #include "models/vlayer_mc/rw.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 std::uint64_t reset_family_size(const VlConfig& c) {
   const Lattice lattice = c.lattice();
@@ -76,4 +76,4 @@ tioa::StartSet reset_family(const VlConfig& c, const tioa::Automaton& layer) {
                                 describe_reset_family(c));
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

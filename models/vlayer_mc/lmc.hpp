@@ -16,11 +16,11 @@
 #include "models/vlayer_mc/config.hpp"
 #include "tioa/automaton.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 // (2 · points)^robots · 2^regions states of `layer` (VLayer[MC] of `config`).
 tioa::StartSet reset_family(const VlConfig& config, const tioa::Automaton& layer);
 std::uint64_t reset_family_size(const VlConfig& config);
 std::string describe_reset_family(const VlConfig& config);
 
-} // namespace vlayer
+} // namespace vlayer_mc

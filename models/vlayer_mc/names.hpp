@@ -4,7 +4,7 @@
 
 #include <string>
 
-namespace vlayer::names {
+namespace vlayer_mc::names {
 
 inline std::string indexed(const char* action, int id) {
   return action + std::string("_") + std::to_string(id);
@@ -67,4 +67,4 @@ inline std::string vrcv_vn_update(int u) {
   return indexed("vrcv_vn_update", u);
 }
 
-} // namespace vlayer::names
+} // namespace vlayer_mc::names

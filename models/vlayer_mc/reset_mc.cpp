@@ -6,7 +6,7 @@
 #include "models/vlayer_mc/rw.hpp"
 #include "models/vlayer_mc/slots.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 namespace {
 
@@ -134,4 +134,4 @@ tioa::StatePredicate reset_mc_or_targetless(const VlConfig& c, const tioa::Autom
   };
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

@@ -15,7 +15,7 @@
 
 #include "models/vlayer_mc/l1mc.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 // The clauses (1)–(5) a state breaks ("(1) (2) VN_0" for an L1MC clause), empty in ResetMC.
 ClauseCheck reset_mc_clauses(const VlConfig& config, const tioa::Automaton& layer,
@@ -33,4 +33,4 @@ tioa::StatePredicate reset_mc(const VlConfig& config, const tioa::Automaton& lay
 tioa::StatePredicate reset_mc_or_targetless(const VlConfig& config, const tioa::Automaton& layer,
                                             MWindow window = MWindow::as_printed);
 
-} // namespace vlayer
+} // namespace vlayer_mc

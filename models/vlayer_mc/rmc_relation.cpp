@@ -2,12 +2,12 @@
 
 #include <set>
 
-#include "checker/state_store.hpp"
 #include "models/vlayer_mc/names.hpp"
 #include "models/vlayer_mc/rw.hpp"
 #include "models/vlayer_mc/slots.hpp"
+#include "tioa/state_hash.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 namespace {
 
@@ -251,7 +251,7 @@ std::uint64_t RmcRelation::key(const Word* s) const {
     for (const Guarded& g : node.guarded)
       guarded(g);
   }
-  return checker::hash_state(&h, 1);
+  return tioa::hash_state(&h, 1);
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

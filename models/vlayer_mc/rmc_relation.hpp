@@ -1,6 +1,6 @@
 #pragma once
 // The simulation relation R_MC of seed 000 §7.3 (lines 1300–1335), the relation of
-// Lemmas 7.6 and 7.7 (models/vlayer_mc/simulation.hpp).
+// Lemmas 7.6 and 7.7 (proofs/vlayer_mc/simulation.hpp).
 //
 // The paper gives only "some of the conditions" (Appendix C is not in the seed):
 //   (1) the same real time and locations,  (2) per client: RW's velocity equal or y's ⊥,
@@ -33,7 +33,7 @@
 #include "models/vlayer_mc/config.hpp"
 #include "tioa/automaton.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 // Which reading of the parts the paper leaves open: `strict` compares all of a live CN;
 // `loose` adds (5′); `loose_reg` adds (4′) too, departing from the printed part (4). The
@@ -90,4 +90,4 @@ private:
   std::vector<Node> nodes_;
 };
 
-} // namespace vlayer
+} // namespace vlayer_mc

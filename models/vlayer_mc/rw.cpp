@@ -2,7 +2,7 @@
 
 #include "models/vlayer_mc/names.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 using tioa::Params;
 using tioa::State;
@@ -48,4 +48,4 @@ tioa::Automaton rw(const VlConfig& c) {
   return a;
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

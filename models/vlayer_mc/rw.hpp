@@ -16,10 +16,10 @@
 #include "models/vlayer_mc/config.hpp"
 #include "tioa/automaton.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 inline constexpr int zero_velocity = -1; // vel[p] = 0, v_p = 0
 
 tioa::Automaton rw(const VlConfig& config);
 
-} // namespace vlayer
+} // namespace vlayer_mc

@@ -8,7 +8,7 @@
 #include "tioa/automaton.hpp"
 #include "tioa/errors.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 // The variable's slot, if `layer` has a variable of that name.
 inline std::optional<tioa::Slot> find_slot(const tioa::Automaton& layer, const std::string& name) {
@@ -25,4 +25,4 @@ inline tioa::Slot need_slot(const tioa::Automaton& layer, const std::string& nam
   return *slot;
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

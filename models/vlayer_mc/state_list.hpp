@@ -7,7 +7,7 @@
 
 #include "tioa/automaton.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 // States of one automaton, `words` words each, one after the other.
 struct StateList {
@@ -20,4 +20,4 @@ struct StateList {
   }
 };
 
-} // namespace vlayer
+} // namespace vlayer_mc

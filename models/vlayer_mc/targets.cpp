@@ -4,7 +4,7 @@
 
 #include "models/mc/spacing.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 std::vector<mc::QuantisedLength> curve_q(const Lattice& lattice) {
   std::vector<mc::QuantisedLength> q(static_cast<std::size_t>(lattice.regions()), 0);
@@ -66,4 +66,4 @@ std::vector<std::optional<Point>> compute_targets(const VlConfig& c, RegionId u,
   return target;
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

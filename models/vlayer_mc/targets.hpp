@@ -20,7 +20,7 @@
 #include "models/mc/assign.hpp"
 #include "models/vlayer_mc/config.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 // q_u in units of σ for every region (the curve above).
 std::vector<mc::QuantisedLength> curve_q(const Lattice& lattice);
@@ -31,4 +31,4 @@ std::vector<std::optional<Point>> compute_targets(const VlConfig& config, Region
                                                   const std::vector<std::optional<Point>>& reported,
                                                   const std::vector<int>& counts);
 
-} // namespace vlayer
+} // namespace vlayer_mc

@@ -4,7 +4,7 @@
 
 #include "models/vlayer_mc/names.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 using tioa::Params;
 using tioa::State;
@@ -121,4 +121,4 @@ tioa::Automaton vbcast(const VlConfig& c) {
   return a;
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

@@ -21,8 +21,8 @@
 #include "models/vlayer_mc/config.hpp"
 #include "tioa/automaton.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 tioa::Automaton vbcast(const VlConfig& config);
 
-} // namespace vlayer
+} // namespace vlayer_mc

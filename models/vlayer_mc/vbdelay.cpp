@@ -4,7 +4,7 @@
 
 #include "models/vlayer_mc/names.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 using tioa::Params;
 using tioa::State;
@@ -35,4 +35,4 @@ tioa::Automaton vbdelay(const VlConfig& c, int p) {
   return a;
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

@@ -14,8 +14,8 @@
 #include "models/vlayer_mc/config.hpp"
 #include "tioa/automaton.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 tioa::Automaton vbdelay(const VlConfig& config, int p);
 
-} // namespace vlayer
+} // namespace vlayer_mc

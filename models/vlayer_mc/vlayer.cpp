@@ -10,7 +10,7 @@
 #include "tioa/compose.hpp"
 #include "tioa/fail.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 std::vector<tioa::Automaton> vlnodes_components(const VlConfig& c) {
   std::vector<tioa::Automaton> nodes;
@@ -68,4 +68,4 @@ tioa::StartSet placed_start(const tioa::Automaton& layer, const std::vector<Poin
                                 "VLayer[MC] with no node failed, robots at points " + where);
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

@@ -18,7 +18,7 @@
 #include "models/vlayer_mc/config.hpp"
 #include "tioa/automaton.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 // Which failures and restarts may happen from the start on (robots: of the clients, vsas:
 // of the VSAs).
@@ -41,4 +41,4 @@ tioa::Automaton vlayer(const VlConfig& config, Faults faults = {});
 // set of Fail(...) itself would visit every valuation of the failed nodes.
 tioa::StartSet placed_start(const tioa::Automaton& layer, const std::vector<Point>& locations);
 
-} // namespace vlayer
+} // namespace vlayer_mc

@@ -5,7 +5,7 @@
 #include "models/vlayer_mc/names.hpp"
 #include "models/vlayer_mc/targets.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 using tioa::Params;
 using tioa::State;
@@ -116,4 +116,4 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
   return a;
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

@@ -26,8 +26,8 @@
 #include "models/vlayer_mc/config.hpp"
 #include "tioa/automaton.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 tioa::Automaton vn(const VlConfig& config, RegionId u);
 
-} // namespace vlayer
+} // namespace vlayer_mc

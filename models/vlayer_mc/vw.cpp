@@ -2,7 +2,7 @@
 
 #include "models/vlayer_mc/names.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 using tioa::Params;
 using tioa::State;
@@ -37,4 +37,4 @@ tioa::Automaton vw(const VlConfig& c, bool vsa_faults) {
   return a;
 }
 
-} // namespace vlayer
+} // namespace vlayer_mc

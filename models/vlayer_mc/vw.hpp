@@ -13,8 +13,8 @@
 #include "models/vlayer_mc/config.hpp"
 #include "tioa/automaton.hpp"
 
-namespace vlayer {
+namespace vlayer_mc {
 
 tioa::Automaton vw(const VlConfig& config, bool vsa_faults);
 
-} // namespace vlayer
+} // namespace vlayer_mc

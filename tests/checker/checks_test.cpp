@@ -35,6 +35,14 @@ StatePredicate x_is_zero(const tioa::Automaton& a) {
   return variable_is(a, "x", 0);
 }
 
+// The token ring's predicates: at least one / exactly one process privileged.
+StatePredicate some_privileged(const token_ring::TokenRing& ring) {
+  return [privileges = ring.privileges](const State& s) { return privileges(s) >= 1; };
+}
+StatePredicate exactly_one_privileged(const token_ring::TokenRing& ring) {
+  return [privileges = ring.privileges](const State& s) { return privileges(s) == 1; };
+}
+
 std::uint64_t duration(const Trace& t) {
   return t.steps.back().time - t.steps.front().time;
 }
@@ -85,7 +93,7 @@ TEST_CASE("invariant: violated, with a shortest trace", "[checker][invariant]") 
 }
 
 TEST_CASE("invariant: a limit gives incomplete, never holds", "[checker][invariant][limits]") {
-  const auto ring = models::build_token_ring(5, 4);
+  const auto ring = token_ring::build(5, 4);
   ExploreOptions options;
   options.limits.max_states = 10;
   const PropertyResult r = check_invariant(
@@ -102,7 +110,7 @@ TEST_CASE("invariant: a limit gives incomplete, never holds", "[checker][invaria
 // ----------------------------------------------------------------------------- deadlock
 
 TEST_CASE("deadlock: holds when every reachable state can move", "[checker][deadlock]") {
-  const auto ring = models::build_token_ring(4, 3);
+  const auto ring = token_ring::build(4, 3);
   const PropertyResult r = check_no_deadlock(ring.system, {});
   CHECK(r.verdict == Verdict::holds);
   CHECK(r.kind == "deadlock");
@@ -136,7 +144,7 @@ TEST_CASE("deadlock: violated, with a trace to the first stuck state", "[checker
   SECTION("a limit gives incomplete") {
     ExploreOptions options;
     options.limits.max_memory_bytes = 1;
-    const auto ring = models::build_token_ring(4, 3);
+    const auto ring = token_ring::build(4, 3);
     CHECK(check_no_deadlock(ring.system, options).verdict == Verdict::incomplete);
   }
 }
@@ -145,8 +153,8 @@ TEST_CASE("deadlock: violated, with a trace to the first stuck state", "[checker
 
 TEST_CASE("legal set: holds, closed under steps and ticks", "[checker][legal_set]") {
   SECTION("token ring N=4 K=3: exactly one privileged") {
-    const auto ring = models::build_token_ring(4, 3);
-    const PropertyResult r = check_legal_set(ring.system, ring.properties[1].predicate, {});
+    const auto ring = token_ring::build(4, 3);
+    const PropertyResult r = check_legal_set(ring.system, exactly_one_privileged(ring), {});
     CHECK(r.verdict == Verdict::holds);
     CHECK(r.kind == "legal-set");
     CHECK(r.states == 21); // |L|, from tools/reference/peer_models.py
@@ -208,15 +216,15 @@ TEST_CASE("legal set: closure is checked from every state of L, reachable or not
   SECTION("a state limit of |L| or more changes nothing") {
     ExploreOptions options;
     options.limits.max_states = 22;
-    const auto ring = models::build_token_ring(4, 3); // |L| = 21
-    CHECK(check_legal_set(ring.system, ring.properties[1].predicate, options).verdict ==
+    const auto ring = token_ring::build(4, 3); // |L| = 21
+    CHECK(check_legal_set(ring.system, exactly_one_privileged(ring), options).verdict ==
           Verdict::holds);
   }
   SECTION("a state limit below |L| gives incomplete") {
     ExploreOptions options;
     options.limits.max_states = 2;
-    const auto ring = models::build_token_ring(4, 3);
-    const PropertyResult l = check_legal_set(ring.system, ring.properties[1].predicate, options);
+    const auto ring = token_ring::build(4, 3);
+    const PropertyResult l = check_legal_set(ring.system, exactly_one_privileged(ring), options);
     CHECK(l.verdict == Verdict::incomplete);
     CHECK(l.message.rfind("state limit reached", 0) == 0);
   }
@@ -225,17 +233,16 @@ TEST_CASE("legal set: closure is checked from every state of L, reachable or not
 TEST_CASE("legal set: a state limit of exactly |L| is not hit", "[checker][legal_set][limits]") {
   // As in explore(), max_states means "at most this many": a run that covers exactly
   // max_states states finishes.
-  const auto ring = models::build_token_ring(4, 3); // 81 states, |L| = 21
+  const auto ring = token_ring::build(4, 3); // 81 states, |L| = 21
   ExploreOptions options;
   options.limits.max_states = 81;
-  CHECK(check_invariant(ring.system, ring.properties[0].predicate, options).verdict ==
-        Verdict::holds);
+  CHECK(check_invariant(ring.system, some_privileged(ring), options).verdict == Verdict::holds);
   options.limits.max_states = 21;
-  const PropertyResult r = check_legal_set(ring.system, ring.properties[1].predicate, options);
+  const PropertyResult r = check_legal_set(ring.system, exactly_one_privileged(ring), options);
   INFO(r.message);
   CHECK(r.verdict == Verdict::holds);
   options.limits.max_states = 20;
-  CHECK(check_legal_set(ring.system, ring.properties[1].predicate, options).verdict ==
+  CHECK(check_legal_set(ring.system, exactly_one_privileged(ring), options).verdict ==
         Verdict::incomplete);
 }
 
@@ -290,7 +297,7 @@ TEST_CASE("stabilisation: a timed countdown stabilises in exactly top quanta",
 // limit the exploration fits in but the graph does not, the verdict is incomplete.
 TEST_CASE("stabilisation: a graph over the memory limit gives incomplete",
           "[checker][stabilisation][limits]") {
-  const auto fischer = models::build_fischer(3, 1, 2);
+  const auto fischer = fischer::build(3, 1, 2);
   const tioa::SuccessorGenerator generator(fischer.system);
   ExploreHooks hooks;
   hooks.record_edges = true;
@@ -302,7 +309,7 @@ TEST_CASE("stabilisation: a graph over the memory limit gives incomplete",
   ExploreOptions options;
   REQUIRE(ex.peak_memory_bytes < ex.memory_bytes() + graph); // the exploration fits
   options.limits.max_memory_bytes = ex.memory_bytes() + graph - 1;
-  const tioa::StatePredicate legal = fischer.properties[0].predicate;
+  const tioa::StatePredicate legal = fischer.at_most_one_in_cs;
   const PropertyResult r = check_stabilisation(fischer.system, legal, options);
   CHECK(r.verdict == Verdict::incomplete);
   CHECK(r.states == n);
@@ -545,10 +552,10 @@ TEST_CASE("stabilisation: stuck outside L is a violation", "[checker][stabilisat
 }
 
 TEST_CASE("stabilisation: a limit gives incomplete", "[checker][stabilisation][limits]") {
-  const auto ring = models::build_token_ring(5, 4);
+  const auto ring = token_ring::build(5, 4);
   ExploreOptions options;
   options.limits.max_states = 100;
-  const PropertyResult r = check_stabilisation(ring.system, ring.properties[2].predicate, options);
+  const PropertyResult r = check_stabilisation(ring.system, exactly_one_privileged(ring), options);
   CHECK(r.verdict == Verdict::incomplete);
   CHECK_FALSE(r.worst_time);
 }
@@ -614,20 +621,39 @@ TEST_CASE("transitivity: vacuous when a premise fails", "[checker][transitivity]
 // ----------------------------------------------------------------------------- property
 
 TEST_CASE("run_property: dispatches on the kind and names the result", "[checker][property]") {
-  const auto ring = models::build_token_ring(4, 3);
-  const std::vector<std::pair<std::string, std::string>> kinds{{"some-privileged", "invariant"},
-                                                               {"legal-closure", "legal-set"},
-                                                               {"convergence", "stabilisation"},
-                                                               {"transitivity", "transitivity"}};
-  REQUIRE(ring.properties.size() == kinds.size());
+  const auto ring = token_ring::build(4, 3);
+  const std::vector<Property> properties{
+      {"some-privileged",
+       "at least one",
+       PropertyKind::invariant,
+       some_privileged(ring),
+       "",
+       {},
+       ""},
+      {"legal-closure",
+       "L is closed",
+       PropertyKind::legal_set,
+       exactly_one_privileged(ring),
+       "",
+       {},
+       ""},
+      {"convergence",
+       "U(A) reaches L",
+       PropertyKind::stabilisation,
+       exactly_one_privileged(ring),
+       "",
+       {},
+       ""},
+      {"transitivity", "Lemma 3.4", PropertyKind::transitivity, exactly_one_privileged(ring), "",
+       [privileges = ring.privileges](const State& s) { return privileges(s) <= 2; }, ""}};
+  const std::vector<std::string> kinds{"invariant", "legal-set", "stabilisation", "transitivity"};
   for (std::size_t i = 0; i < kinds.size(); ++i) {
-    const Property& p = ring.properties[i];
-    CHECK(p.name == kinds[i].first);
-    CHECK(to_string(p.kind) == kinds[i].second);
+    const Property& p = properties[i];
+    CHECK(to_string(p.kind) == kinds[i]);
     const PropertyResult r = run_property(ring.system, p, {});
     CHECK(r.name == p.name);
     CHECK(r.description == p.description);
-    CHECK(r.kind == kinds[i].second);
+    CHECK(r.kind == kinds[i]);
     CHECK(r.verdict == Verdict::holds);
   }
   Property deadlock{"no-deadlock", "no deadlock", PropertyKind::deadlock, {}, "", {}, ""};

@@ -190,7 +190,7 @@ TEST_CASE("explore: start states are level 0, duplicates among them counted once
 TEST_CASE("explore: the same ids, parents, counts and target for 1, 2 and 4 threads",
           "[checker][explorer][threads]") {
   SECTION("token ring N=7 K=6: 279936 start states, so level 0 is expanded in parallel") {
-    const auto ring = models::build_token_ring(7, 6);
+    const auto ring = token_ring::build(7, 6);
     ExploreHooks hooks;
     hooks.record_edges = true;
     const Exploration one = run(ring.system, with_threads(1), hooks);
@@ -204,7 +204,7 @@ TEST_CASE("explore: the same ids, parents, counts and target for 1, 2 and 4 thre
     }
   }
   SECTION("Fischer N=6: levels of up to 9817 new states are merged from several threads") {
-    const auto fischer = models::build_fischer(6, 1, 2);
+    const auto fischer = fischer::build(6, 1, 2);
     ExploreHooks hooks;
     hooks.record_edges = true;
     const Exploration one = run(fischer.system, with_threads(1), hooks);
@@ -215,7 +215,7 @@ TEST_CASE("explore: the same ids, parents, counts and target for 1, 2 and 4 thre
       require_same(one, run(fischer.system, with_threads(threads), hooks));
   }
   SECTION("Fischer N=6: the first target found") {
-    const auto fischer = models::build_fischer(6, 1, 2);
+    const auto fischer = fischer::build(6, 1, 2);
     const auto& a = fischer.system;
     // A deep state: three processes waiting, all with clock >= 2.
     const auto locations = slots_named(a, "loc"), clocks = slots_named(a, "c");
@@ -246,7 +246,7 @@ TEST_CASE("explore: zero threads means one", "[checker][explorer][threads]") {
 }
 
 TEST_CASE("explore: a state limit stops the run, incomplete", "[checker][explorer][limits]") {
-  const auto ring = models::build_token_ring(5, 4); // 1024 states, all start states
+  const auto ring = token_ring::build(5, 4); // 1024 states, all start states
   ExploreOptions options;
   options.limits.max_states = 100;
   const Exploration ex = run(ring.system, options);
@@ -255,7 +255,7 @@ TEST_CASE("explore: a state limit stops the run, incomplete", "[checker][explore
   CHECK(ex.store.size() == 100); // never more than max_states states
 
   SECTION("also when the limit is reached after level 0") {
-    const auto fischer = models::build_fischer(3, 1, 2); // 357 states from one
+    const auto fischer = fischer::build(3, 1, 2); // 357 states from one
     options.limits.max_states = 50;
     const Exploration e = run(fischer.system, options);
     CHECK(e.stop == StopReason::state_limit);
@@ -269,7 +269,7 @@ TEST_CASE("explore: a state limit stops the run, incomplete", "[checker][explore
     }
   }
   SECTION("the same states for every thread count when levels are merged in parallel") {
-    const auto fischer = models::build_fischer(6, 1, 2);
+    const auto fischer = fischer::build(6, 1, 2);
     options.limits.max_states = 30000;
     const Exploration e = run(fischer.system, options);
     CHECK(e.stop == StopReason::state_limit);
@@ -291,7 +291,7 @@ TEST_CASE("explore: a run cut inside a parallel level counts the same for every 
   // Regression: the merge loop once added a worker's counts only while it had not
   // stopped, so a state limit or a target hit in worker t dropped the counts of workers
   // t+1.., which with one thread are all counted.
-  const auto fischer = models::build_fischer(6, 1, 2);
+  const auto fischer = fischer::build(6, 1, 2);
   ExploreHooks hooks;
   hooks.record_edges = true;
   SECTION("state limit") {
@@ -335,7 +335,7 @@ TEST_CASE("explore: a run cut inside a parallel level counts the same for every 
 
 TEST_CASE("explore: time and memory limits stop the run, incomplete",
           "[checker][explorer][limits]") {
-  const auto fischer = models::build_fischer(3, 1, 2);
+  const auto fischer = fischer::build(3, 1, 2);
   SECTION("time") {
     ExploreOptions options;
     options.limits.max_seconds = 1e-9;
@@ -345,7 +345,7 @@ TEST_CASE("explore: time and memory limits stop the run, incomplete",
     CHECK(std::string(describe(ex.stop)) == "time limit reached");
   }
   SECTION("time, with a large level 0") {
-    const auto ring = models::build_token_ring(7, 6);
+    const auto ring = token_ring::build(7, 6);
     ExploreOptions options;
     options.limits.max_seconds = 1e-9;
     options.threads = 2;
@@ -366,7 +366,7 @@ TEST_CASE("explore: time and memory limits stop the run, incomplete",
 // Regression: vlayer-mc lemma-7.3 on 2x2 with --max-memory 16000 was killed by the kernel
 // at 24 GB: buffers doubled between the checks of the limit. Now no buffer grows past it.
 TEST_CASE("explore: the memory limit holds at every growth", "[checker][explorer][limits]") {
-  const auto ring = models::build_token_ring(7, 6);
+  const auto ring = token_ring::build(7, 6);
   ExploreHooks hooks;
   hooks.record_edges = true;
   for (unsigned threads : {1u, 2u}) {
@@ -492,6 +492,6 @@ TEST_CASE("explore: stuck states are reported in BFS order", "[checker][explorer
   CHECK(ex.stuck == std::vector<StateId>{0, 2, 4});
 
   SECTION("none in the token ring: some process is always privileged") {
-    CHECK(run(models::build_token_ring(4, 3).system).stuck.empty());
+    CHECK(run(token_ring::build(4, 3).system).stuck.empty());
   }
 }

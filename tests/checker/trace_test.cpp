@@ -30,7 +30,7 @@ tioa::Automaton cycle3() {
 
 TEST_CASE("trace_to: a shortest trace to every state, which replays", "[checker][trace]") {
   for (int n : {2, 3}) {
-    const auto fischer = models::build_fischer(n, 1, 2);
+    const auto fischer = fischer::build(n, 1, 2);
     const auto& a = fischer.system;
     const tioa::SuccessorGenerator generator(a);
     const Exploration ex = explore(generator, a.start(), {});
@@ -107,7 +107,7 @@ TEST_CASE("extend: only along a step of the model", "[checker][trace]") {
 
 TEST_CASE("replay: a tampered trace is rejected", "[checker][trace]") {
   // A shortest trace to a Fischer state with a process in CS: try, set, tick, tick, enter.
-  const auto fischer = models::build_fischer(2, 1, 2);
+  const auto fischer = fischer::build(2, 1, 2);
   const auto& a = fischer.system;
   const tioa::SuccessorGenerator generator(a);
   const tioa::Slot first_location = slots_named(a, "loc").front();

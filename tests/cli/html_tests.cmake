@@ -5,18 +5,8 @@
 
 # A page of a real vlayer-mc trace, written through the CLI's report and renderer (the
 # model has no property with a trace yet).
-add_executable(cli_html_vlayer_page
-  html_vlayer_page.cpp
-  ${PROJECT_SOURCE_DIR}/cli/model_run.cpp
-  ${PROJECT_SOURCE_DIR}/cli/render_html.cpp
-  ${PROJECT_SOURCE_DIR}/cli/render_path_reservation.cpp
-  ${PROJECT_SOURCE_DIR}/cli/render_table.cpp
-  ${PROJECT_SOURCE_DIR}/cli/render_vlayer.cpp
-  ${PROJECT_SOURCE_DIR}/cli/report_json.cpp
-  ${PROJECT_SOURCE_DIR}/cli/time_note.cpp)
-target_include_directories(cli_html_vlayer_page PRIVATE ${PROJECT_SOURCE_DIR})
-target_link_libraries(cli_html_vlayer_page PRIVATE registry nlohmann_json::nlohmann_json fmt::fmt
-                                                   tioa_warnings)
+add_executable(cli_html_vlayer_page html_vlayer_page.cpp)
+target_link_libraries(cli_html_vlayer_page PRIVATE app tioa_warnings)
 
 # html_test(NAME EXIT code PAGE file [FRAMES n] [CHROMIUM] COMMAND words... [PAGE_REGEX regex...])
 function(html_test name)

@@ -7,20 +7,20 @@
 #include <fstream>
 #include <iostream>
 
+#include "catalogue/registry.hpp"
 #include "checker/property.hpp"
 #include "cli/model_run.hpp"
 #include "cli/render_html.hpp"
 #include "cli/report_json.hpp"
-#include "models/registry.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::cerr << "usage: cli_html_vlayer_page FILE\n";
     return 2;
   }
-  const models::ModelDefinition& definition = models::find_model("vlayer-mc");
-  const models::ParamValues values = models::resolve_params(definition, {});
-  const models::ModelInstance instance = definition.build(values);
+  const catalogue::ModelDefinition& definition = catalogue::find_model("vlayer-mc");
+  const catalogue::ParamValues values = catalogue::resolve_params(definition, {});
+  const catalogue::ModelInstance instance = definition.build(values);
   const auto target = tioa::find_variable<int>(instance.system, "CN_0.cn.target");
 
   checker::Property no_target;

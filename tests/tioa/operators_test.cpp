@@ -1,11 +1,11 @@
-// Start(A, L), U(A) (tioa/operators.hpp), R(A) (checker/reach.hpp), and the claim of seed
-// 000 §3.3 that "the Fail and U operators commute".
+// Start(A, L), U(A) (tioa/operators.hpp) and the claim of seed 000 §3.3 that "the Fail and U
+// operators commute".
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <map>
 
-#include "checker/reach.hpp"
+#include "tests/tioa/climb_fixture.hpp"
 #include "tests/tioa/fail_fixture.hpp"
 
 using namespace tioa;
@@ -34,30 +34,6 @@ std::set<Words> states_of(const std::vector<Step>& list) {
     out.insert(s.state);
   return out;
 }
-
-// x counts up to 2 from 0 (but could hold 3); at 2, b may be flipped.
-struct Climb {
-  Automaton a{"climb"};
-  Variable<int> x = a.integer("x", 0, 3, 0);
-  Variable<bool> b = a.boolean("b", false);
-  Climb() {
-    const auto x = this->x;
-    const auto b = this->b;
-    a.internal("up")
-        .pre([=](const State& s, const Params&) { return s[x] < 2; })
-        .eff([=](State& s, const Params&) { s[x] = s[x] + 1; });
-    a.internal("flip")
-        .pre([=](const State& s, const Params&) { return s[x] == 2; })
-        .eff([=](State& s, const Params&) { s[b] = !s[b]; });
-  }
-  Words state(int xv, bool bv) const {
-    Words w(a.words(), 0);
-    State s(w.data(), 0);
-    s[x] = xv;
-    s[b] = bv;
-    return w;
-  }
-};
 
 } // namespace
 
@@ -101,42 +77,6 @@ TEST_CASE("U(A): every valuation is a start state", "[tioa][operators]") {
   b.boolean("p", false);
   CHECK(start_states(U(b)).size() == 4 * 2);
   CHECK(start_states(b).size() == 1);
-}
-
-TEST_CASE("R(A): exactly the reachable states, and R(R(A)) is the same", "[tioa][operators]") {
-  const Climb climb;
-  const Automaton r = checker::R(climb.a);
-  const auto list = start_states(r);
-  const std::set<Words> set(list.begin(), list.end());
-  CHECK(list.size() == 4);
-  CHECK(set == std::set<Words>{climb.state(0, false), climb.state(1, false), climb.state(2, false),
-                               climb.state(2, true)});
-  // x = 3 is in the domain but unreachable.
-  CHECK(set.count(climb.state(3, false)) == 0);
-  CHECK(set == reachable(climb.a).states);
-
-  const Automaton rr = checker::R(r);
-  CHECK(start_set(rr) == set);
-  CHECK(start_states(rr).size() == 4);
-  // R changes the start states only.
-  CHECK(labels(steps(r, climb.state(0, false))) == std::vector<std::string>{"up"});
-
-  // The same for a timed automaton with inputs and failures: R lists what a plain
-  // breadth-first search reaches.
-  const Lamp lamp;
-  const Automaton f = Fail(lamp.a);
-  const std::set<Words> reached = reachable(f).states;
-  CHECK(start_set(checker::R(f)) == reached);
-  CHECK(start_set(checker::R(checker::R(f))) == reached);
-  CHECK(reached.size() == 36);
-}
-
-TEST_CASE("R(A): an exploration cut short by a limit is a ModelError", "[tioa][operators]") {
-  const Climb climb;
-  checker::ExploreOptions options;
-  options.limits.max_states = 2;
-  CHECK_THAT(model_error([&] { checker::R(climb.a, options); }),
-             Contains("R(climb)") && Contains("could not all be explored"));
 }
 
 // Seed 000 §3.3: "It is straightforward to check that for any TIOA A, the Fail and U

@@ -174,8 +174,8 @@ TEST_CASE("assign: floors and comparisons are exact", "[mc][assign]") {
   }
   SECTION("a ρ2 beyond 64 bits takes the arbitrary-precision path") {
     // ρ2 = (10^30 − 1)/10^30: ⌊ρ2·20/6⌋ = ⌊3.333…⌋ = 3, as with ρ2 = 9/10 → 3.
-    const Rational rho2 = *parse_rational("999999999999999999999999999999/"
-                                          "1000000000000000000000000000000");
+    const Rational rho2 = *support::parse_rational("999999999999999999999999999999/"
+                                                   "1000000000000000000000000000000");
     const AssignParams params(1, rho2);
     CHECK_FALSE(params.small());
     const VnView view = make_view(20, 1, {{1, 0, 1}, {2, 0, 1}});

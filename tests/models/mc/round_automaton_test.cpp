@@ -2,7 +2,6 @@
 
 #include "checker/checks.hpp"
 #include "models/mc/round_automaton.hpp"
-#include "models/registry.hpp"
 
 using mc::Counts;
 
@@ -56,16 +55,4 @@ TEST_CASE("mc-round: the worst-case rounds to a fixed point, measured two ways",
     CHECK(*r.worst_time == worst);
     CHECK(worst == 3);
   }
-}
-
-TEST_CASE("mc-round: the registered model builds and its suite entries hold", "[mc][round]") {
-  const auto& def = models::find_model("mc-round");
-  const auto values = models::resolve_params(def, {"rho2=1/2", "nbh=4"});
-  CHECK(values.at("rho2").text() == "1/2");
-  CHECK_THROWS_WITH(models::resolve_params(def, {"rho2=1"}),
-                    "parameter rho2 = 1 is out of range (0, 1)");
-  CHECK_THROWS_WITH(models::resolve_params(def, {"rho2=x"}),
-                    Catch::Contains("is not a rational number"));
-  CHECK_THROWS_WITH(models::resolve_params(def, {"nbh=5"}),
-                    "model 'mc-round': nbh must be 4 or 8, not 5");
 }

@@ -31,9 +31,9 @@ std::string parse_error(const std::string& text) {
   return "<no error>";
 }
 
-// This file is at tests/models/path_reservation/ (CMake compiles it by its full path).
+// The top of the source tree (tests/CMakeLists.txt defines it: __FILE__ may be relative).
 std::filesystem::path repository() {
-  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path().parent_path();
+  return TIOA_SOURCE_DIR;
 }
 
 } // namespace

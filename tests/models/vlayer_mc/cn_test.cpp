@@ -7,8 +7,8 @@
 using namespace vl_test;
 
 TEST_CASE("vlayer CN: a round of one client", "[vlayer]") {
-  const vlayer::VlConfig c; // δ 6, vmax 4, 1×2 with b 2: points y·5 + x
-  const auto cn = vlayer::cn(c, 0);
+  const vlayer_mc::VlConfig c; // δ 6, vmax 4, 1×2 with b 2: points y·5 + x
+  const auto cn = vlayer_mc::cn(c, 0);
   Words s = start(cn);
   CHECK_FALSE(get(cn, s, "clock"));
   CHECK_FALSE(get(cn, s, "x"));

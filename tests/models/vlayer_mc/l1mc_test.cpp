@@ -13,11 +13,11 @@ using namespace vl_test;
 
 namespace {
 
-std::vector<std::string> broken(const vlayer::VlConfig& c, const tioa::Automaton& layer,
+std::vector<std::string> broken(const vlayer_mc::VlConfig& c, const tioa::Automaton& layer,
                                 const Words& s) {
   Words padded = s;
   padded.push_back(0);
-  return vlayer::l1mc_clauses(c, layer)(tioa::State(padded.data(), 0));
+  return vlayer_mc::l1mc_clauses(c, layer)(tioa::State(padded.data(), 0));
 }
 
 using Clauses = std::vector<std::string>;
@@ -25,11 +25,11 @@ using Clauses = std::vector<std::string>;
 } // namespace
 
 TEST_CASE("vlayer L1MC: each clause of Definition 7.1 on hand-made states", "[vlayer]") {
-  const vlayer::VlConfig c; // δ 6, e 0, d 1, ε 0 (target phase 2), d_r 1, ε_sample 1, vmax 4
-  const auto layer = vlayer::vlayer(c, {.robots = false, .vsas = false});
-  const vlayer::Lattice l = c.lattice();
+  const vlayer_mc::VlConfig c; // δ 6, e 0, d 1, ε 0 (target phase 2), d_r 1, ε_sample 1, vmax 4
+  const auto layer = vlayer_mc::vlayer(c, {.robots = false, .vsas = false});
+  const vlayer_mc::Lattice l = c.lattice();
   Words start_state(layer.words() + 1, 0);
-  vlayer::placed_start(layer, {l.point(0, 2)}).enumerate(start_state.data(), 0, [] {});
+  vlayer_mc::placed_start(layer, {l.point(0, 2)}).enumerate(start_state.data(), 0, [] {});
   start_state.resize(layer.words());
   CHECK(broken(c, layer, start_state).empty()); // nothing known yet: every clause holds
 
@@ -84,17 +84,17 @@ TEST_CASE("vlayer L1MC: each clause of Definition 7.1 on hand-made states", "[vl
 // vcast at phase 0 and delivered at once, after the VSA's time(0) — so L1MC is not closed.
 // With the window closed at 0, every reachable state of the smallest instance is in L1MC.
 TEST_CASE("vlayer L1MC: every reachable state of the smallest instance (finding F1)", "[vlayer]") {
-  const vlayer::VlConfig c;
-  const auto unplaced = vlayer::vlayer(c, {.robots = false, .vsas = false});
+  const vlayer_mc::VlConfig c;
+  const auto unplaced = vlayer_mc::vlayer(c, {.robots = false, .vsas = false});
   const auto layer =
-      tioa::Start(unplaced, vlayer::placed_start(unplaced, {c.lattice().point(0, 2)}));
-  const auto printed = checker::check_invariant(layer, vlayer::l1mc(c, layer), {});
+      tioa::Start(unplaced, vlayer_mc::placed_start(unplaced, {c.lattice().point(0, 2)}));
+  const auto printed = checker::check_invariant(layer, vlayer_mc::l1mc(c, layer), {});
   CHECK(printed.verdict == checker::Verdict::violated);
   REQUIRE(printed.trace);
   CHECK(printed.trace->steps.size() == 6); // the start and 5 steps, all at time 0
   CHECK(printed.trace->steps.back().action == "vrcv_cn_update_0(0,10)");
   const auto closed =
-      checker::check_invariant(layer, vlayer::l1mc(c, layer, vlayer::MWindow::closed), {});
+      checker::check_invariant(layer, vlayer_mc::l1mc(c, layer, vlayer_mc::MWindow::closed), {});
   CHECK(closed.verdict == checker::Verdict::holds);
   CHECK(closed.states == 2'706);
 }

@@ -3,7 +3,7 @@
 
 #include "models/vlayer_mc/config.hpp"
 
-using vlayer::Lattice;
+using vlayer_mc::Lattice;
 
 TEST_CASE("vlayer lattice: points, ownership, centres, neighbours", "[vlayer]") {
   const Lattice one_by_two(1, 2, 2, mc::Neighbourhood::four);
@@ -36,20 +36,20 @@ TEST_CASE("vlayer lattice: one quantum of motion at vmax (D8)", "[vlayer]") {
 }
 
 TEST_CASE("vlayer config: the round-length rule of seed 000 §5.5", "[vlayer]") {
-  vlayer::VlConfig c; // e 0, d 1, eps 0, r 4, vmax 4, d_r 1
-  CHECK(vlayer::round_length_bound(c) == 5);
-  CHECK(vlayer::round_length_ok(c)); // delta 6
+  vlayer_mc::VlConfig c; // e 0, d 1, eps 0, r 4, vmax 4, d_r 1
+  CHECK(vlayer_mc::round_length_bound(c) == 5);
+  CHECK(vlayer_mc::round_length_ok(c)); // delta 6
   c.delta = 5;
-  CHECK_FALSE(vlayer::round_length_ok(c));
-  CHECK_FALSE(vlayer::invalid(c)); // breaking the rule is allowed: it is a question to ask
-  vlayer::VlConfig paper;
+  CHECK_FALSE(vlayer_mc::round_length_ok(c));
+  CHECK_FALSE(vlayer_mc::invalid(c)); // breaking the rule is allowed: it is a question to ask
+  vlayer_mc::VlConfig paper;
   paper.e = 1;
   paper.eps = 1;
   paper.delta = 11;
   paper.eps_sample = 2;
   paper.vmax = 2;
-  CHECK(vlayer::round_length_bound(paper) == 10);
-  CHECK(vlayer::round_length_ok(paper));
+  CHECK(vlayer_mc::round_length_bound(paper) == 10);
+  CHECK(vlayer_mc::round_length_ok(paper));
   paper.delta = 4; // target phase e + 2d + 2eps = 5 is outside the round
-  CHECK(vlayer::invalid(paper));
+  CHECK(vlayer_mc::invalid(paper));
 }

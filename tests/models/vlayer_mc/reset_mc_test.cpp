@@ -16,20 +16,20 @@ namespace {
 
 using Clauses = std::vector<std::string>;
 
-Clauses broken(const vlayer::VlConfig& c, const tioa::Automaton& layer, const Words& s) {
+Clauses broken(const vlayer_mc::VlConfig& c, const tioa::Automaton& layer, const Words& s) {
   Words padded = s;
   padded.push_back(0);
-  return vlayer::reset_mc_clauses(c, layer)(tioa::State(padded.data(), 0));
+  return vlayer_mc::reset_mc_clauses(c, layer)(tioa::State(padded.data(), 0));
 }
 
 } // namespace
 
 TEST_CASE("vlayer ResetMC: each clause of Definition 7.2 on hand-made states", "[vlayer]") {
-  const vlayer::VlConfig c;
-  const auto layer = vlayer::vlayer(c, {.robots = false, .vsas = false});
-  const vlayer::Lattice l = c.lattice();
+  const vlayer_mc::VlConfig c;
+  const auto layer = vlayer_mc::vlayer(c, {.robots = false, .vsas = false});
+  const vlayer_mc::Lattice l = c.lattice();
   Words s(layer.words() + 1, 0);
-  vlayer::placed_start(layer, {l.point(1, 1)}).enumerate(s.data(), 0, [] {});
+  vlayer_mc::placed_start(layer, {l.point(1, 1)}).enumerate(s.data(), 0, [] {});
   s.resize(layer.words());
   CHECK(broken(c, layer, s).empty()); // the start: phase 0, no update yet, nothing queued
 
@@ -40,8 +40,8 @@ TEST_CASE("vlayer ResetMC: each clause of Definition 7.2 on hand-made states", "
   CHECK(broken(c, layer, t) == Clauses{"(2) CN_0"});
   // At phase 0 clause (4b) of L1MC leaves no time to move: the target is where it stands.
   set(layer, t, "CN_0.cn.target", l.point(1, 1));
-  set(layer, t, "CN_0.cn.v", vlayer::zero_velocity);
-  set(layer, t, "RW.vel[0]", vlayer::zero_velocity);
+  set(layer, t, "CN_0.cn.v", vlayer_mc::zero_velocity);
+  set(layer, t, "RW.vel[0]", vlayer_mc::zero_velocity);
   CHECK(broken(c, layer, t).empty());
   set(layer, t, "CN_0.delay.held", 1); // to_send_p ≠ λ
   CHECK(broken(c, layer, t) == Clauses{"(2) CN_0"});
@@ -66,13 +66,13 @@ TEST_CASE("vlayer ResetMC: each clause of Definition 7.2 on hand-made states", "
 // The reset states among the reachable states of the smallest instance: the start, and
 // those a round start reaches again (ResetMC is met after every round, Lemma 7.4's target).
 TEST_CASE("vlayer ResetMC: reset states recur in the smallest instance", "[vlayer]") {
-  const vlayer::VlConfig c;
-  const auto layer = vlayer::vlayer(c, {.robots = false, .vsas = false});
+  const vlayer_mc::VlConfig c;
+  const auto layer = vlayer_mc::vlayer(c, {.robots = false, .vsas = false});
   const tioa::SuccessorGenerator generator(layer);
   const auto ex =
-      checker::explore(generator, vlayer::placed_start(layer, {c.lattice().point(0, 2)}), {});
+      checker::explore(generator, vlayer_mc::placed_start(layer, {c.lattice().point(0, 2)}), {});
   REQUIRE(ex.complete());
-  const auto reset = vlayer::reset_mc(c, layer, vlayer::MWindow::closed);
+  const auto reset = vlayer_mc::reset_mc(c, layer, vlayer_mc::MWindow::closed);
   std::size_t resets = 0;
   for (checker::StateId id = 0; id < ex.store.size(); ++id)
     resets += reset(tioa::State(ex.store.state(id), 0)) ? 1 : 0;
@@ -84,23 +84,23 @@ TEST_CASE("vlayer ResetMC: reset states recur in the smallest instance", "[vlaye
 // what the cn-update overwrites: every step from it is a step from z to the same state up to
 // x*_p, and after the vcast the two are the same state.
 TEST_CASE("vlayer ResetMC: a robot without a target whose cn-update is due (D30)", "[vlayer]") {
-  const vlayer::VlConfig c;
-  const auto layer = vlayer::vlayer(c, {.robots = false, .vsas = false});
-  const vlayer::Lattice l = c.lattice();
-  const auto closed = vlayer::MWindow::closed;
-  const auto reset = vlayer::reset_mc(c, layer, closed);
-  const auto relaxed = vlayer::reset_mc_or_targetless(c, layer, closed);
+  const vlayer_mc::VlConfig c;
+  const auto layer = vlayer_mc::vlayer(c, {.robots = false, .vsas = false});
+  const vlayer_mc::Lattice l = c.lattice();
+  const auto closed = vlayer_mc::MWindow::closed;
+  const auto reset = vlayer_mc::reset_mc(c, layer, closed);
+  const auto relaxed = vlayer_mc::reset_mc_or_targetless(c, layer, closed);
   const auto holds = [&](const tioa::StatePredicate& p, Words s) {
     s.push_back(0);
     return p(tioa::State(s.data(), 0));
   };
   Words s(layer.words() + 1, 0);
-  vlayer::placed_start(layer, {l.point(3, 1)}).enumerate(s.data(), 0, [] {});
+  vlayer_mc::placed_start(layer, {l.point(3, 1)}).enumerate(s.data(), 0, [] {});
   s.resize(layer.words());
   set(layer, s, "CN_0.cn.x", l.point(3, 1));
   set(layer, s, "CN_0.cn.clock", 0);
-  set(layer, s, "CN_0.cn.v", vlayer::zero_velocity);
-  set(layer, s, "RW.vel[0]", vlayer::zero_velocity);
+  set(layer, s, "CN_0.cn.v", vlayer_mc::zero_velocity);
+  set(layer, s, "RW.vel[0]", vlayer_mc::zero_velocity);
   set(layer, s, "VBcast.reg[0]", 1);
   REQUIRE(get(layer, s, "CN_0.cn.since") == 1); // the cn-update is due
   CHECK_FALSE(holds(reset, s));
@@ -134,19 +134,19 @@ TEST_CASE("vlayer ResetMC: a robot without a target whose cn-update is due (D30)
 // started in ResetMC). Lemma 7.4's proof ("we eventually arrive at a state in ResetMC") does
 // not cover it; D30's states do, at every round start.
 TEST_CASE("vlayer ResetMC: finding F6, never ResetMC again under a failed VSA", "[vlayer]") {
-  const vlayer::VlConfig c;
-  const auto layer = vlayer::vlayer(c, {.robots = false, .vsas = false});
-  const vlayer::Lattice l = c.lattice();
-  const auto closed = vlayer::MWindow::closed;
+  const vlayer_mc::VlConfig c;
+  const auto layer = vlayer_mc::vlayer(c, {.robots = false, .vsas = false});
+  const vlayer_mc::Lattice l = c.lattice();
+  const auto closed = vlayer_mc::MWindow::closed;
   Words z(layer.words() + 1, 0);
-  vlayer::placed_start(layer, {l.point(3, 1)}).enumerate(z.data(), 0, [] {});
+  vlayer_mc::placed_start(layer, {l.point(3, 1)}).enumerate(z.data(), 0, [] {});
   z.resize(layer.words());
   for (const auto& [name, value] :
        std::vector<std::pair<std::string, std::int64_t>>{{"CN_0.cn.x", l.point(3, 1)},
                                                          {"CN_0.cn.target", l.point(3, 1)},
                                                          {"CN_0.cn.clock", 0},
-                                                         {"CN_0.cn.v", vlayer::zero_velocity},
-                                                         {"RW.vel[0]", vlayer::zero_velocity},
+                                                         {"CN_0.cn.v", vlayer_mc::zero_velocity},
+                                                         {"RW.vel[0]", vlayer_mc::zero_velocity},
                                                          {"VBcast.reg[0]", 1},
                                                          {"VN_0.clock", 0},
                                                          {"VN_1.failed", 1}})
@@ -155,8 +155,8 @@ TEST_CASE("vlayer ResetMC: finding F6, never ResetMC again under a failed VSA", 
       tioa::Start(layer, tioa::StartSet::listed(layer.layout().bits(), layer.words(), z, "z"));
   const auto ex = checker::explore(tioa::SuccessorGenerator(system), system.start(), {});
   REQUIRE(ex.complete());
-  const auto reset = vlayer::reset_mc(c, layer, closed);
-  const auto relaxed = vlayer::reset_mc_or_targetless(c, layer, closed);
+  const auto reset = vlayer_mc::reset_mc(c, layer, closed);
+  const auto relaxed = vlayer_mc::reset_mc_or_targetless(c, layer, closed);
   std::size_t resets = 0, targetless = 0;
   for (checker::StateId id = 0; id < ex.store.size(); ++id) {
     const tioa::State state(ex.store.state(id), 0);

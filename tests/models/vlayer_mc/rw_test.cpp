@@ -7,8 +7,8 @@
 using namespace vl_test;
 
 TEST_CASE("vlayer RW: a GPSupdate every eps_sample, with the true place and time", "[vlayer]") {
-  const vlayer::VlConfig c; // 1×2, b 2, δ 6, eps_sample 1, vmax 4
-  const auto rw = vlayer::rw(c);
+  const vlayer_mc::VlConfig c; // 1×2, b 2, δ 6, eps_sample 1, vmax 4
+  const auto rw = vlayer_mc::rw(c);
   Words s = start(rw);
   CHECK(get(rw, s, "now") == 0);
   CHECK_FALSE(get(rw, s, "vel[0]"));
@@ -28,10 +28,10 @@ TEST_CASE("vlayer RW: a GPSupdate every eps_sample, with the true place and time
 }
 
 TEST_CASE("vlayer RW: robots move towards the point they steer to (D4, D8)", "[vlayer]") {
-  vlayer::VlConfig c;
+  vlayer_mc::VlConfig c;
   c.vmax = 1;
   c.eps_sample = 3;
-  const auto rw = vlayer::rw(c);
+  const auto rw = vlayer_mc::rw(c);
   Words s = start(rw);
   set(rw, s, "loc[0]", 5);     // (0, 1)
   set(rw, s, "gps_age[0]", 0); // just updated

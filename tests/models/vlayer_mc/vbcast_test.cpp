@@ -7,8 +7,8 @@
 using namespace vl_test;
 
 TEST_CASE("vlayer VBcast: a cn-update reaches the VN of its location within d", "[vlayer]") {
-  const vlayer::VlConfig c; // 1×2, d 1
-  const auto vb = vlayer::vbcast(c);
+  const vlayer_mc::VlConfig c; // 1×2, d 1
+  const auto vb = vlayer_mc::vbcast(c);
   Words s = start(vb);
   CHECK_FALSE(get(vb, s, "reg[0]"));
   // Before any GPSupdate VBcast does not know where p is: nobody receives (D10).
@@ -30,11 +30,11 @@ TEST_CASE("vlayer VBcast: a cn-update reaches the VN of its location within d", 
 }
 
 TEST_CASE("vlayer VBcast: only nbrs+ of the sender's region receive", "[vlayer]") {
-  vlayer::VlConfig c;
+  vlayer_mc::VlConfig c;
   c.rows = 2;
   c.cols = 2;
   c.robots = 2;
-  const auto vb = vlayer::vbcast(c); // 4-neighbourhood: 0 and 3 are not neighbours
+  const auto vb = vlayer_mc::vbcast(c); // 4-neighbourhood: 0 and 3 are not neighbours
   Words s = start(vb);
   s = after(vb, s, "GPSupdate_0(0,0)");  // robot 0 in region 0
   s = after(vb, s, "GPSupdate_1(24,0)"); // robot 1 at (4, 4), region 3

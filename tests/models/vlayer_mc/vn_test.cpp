@@ -7,45 +7,45 @@
 #include "tests/models/vlayer_mc/vl_helpers.hpp"
 
 using namespace vl_test;
-using Targets = std::vector<std::optional<vlayer::Point>>;
+using Targets = std::vector<std::optional<vlayer_mc::Point>>;
 
 TEST_CASE("vlayer targets: calctarget on the lattice (Fig. 7 lines 26–38)", "[vlayer]") {
-  vlayer::VlConfig c; // 1×2, b 2: Γ is y = 1, Γ_0 is x ∈ [0, 2]; points y·5 + x
+  vlayer_mc::VlConfig c; // 1×2, b 2: Γ is y = 1, Γ_0 is x ∈ [0, 2]; points y·5 + x
   c.robots = 3;
-  const vlayer::Lattice l = c.lattice();
-  CHECK(vlayer::curve_q(l) == std::vector<mc::QuantisedLength>{2, 2});
+  const vlayer_mc::Lattice l = c.lattice();
+  CHECK(vlayer_mc::curve_q(l) == std::vector<mc::QuantisedLength>{2, 2});
   // One robot on Γ_0: the first of seq goes to inf P_0 (line 35).
-  CHECK(vlayer::compute_targets(c, 0, {l.point(1, 1), {}, {}}, {0}) ==
+  CHECK(vlayer_mc::compute_targets(c, 0, {l.point(1, 1), {}, {}}, {0}) ==
         Targets{l.point(0, 1), {}, {}});
   // Off Γ_0: the nearest point of Γ_0 (line 33).
-  CHECK(vlayer::compute_targets(c, 0, {l.point(1, 2), {}, {}}, {0}) ==
+  CHECK(vlayer_mc::compute_targets(c, 0, {l.point(1, 2), {}, {}}, {0}) ==
         Targets{l.point(1, 1), {}, {}});
   // Three on Γ_0 at x = 0, 1, 1: first → 0, last → sup P_0 = 2 (owned by region 1: the
   // migration of models/mc/README.md), the middle 1 + ½((0 + 1)/2 − 1) = ¾ → 0 (floor).
   // assign: y = 3, neighbour 1 has 0: ⌊0.9·3/4⌋ = 0 robots move.
-  CHECK(vlayer::compute_targets(c, 0, {l.point(0, 1), l.point(1, 1), l.point(1, 1)}, {0}) ==
+  CHECK(vlayer_mc::compute_targets(c, 0, {l.point(0, 1), l.point(1, 1), l.point(1, 1)}, {0}) ==
         Targets{l.point(0, 1), l.point(0, 1), l.point(2, 1)});
 }
 
 TEST_CASE("vlayer targets: the boundary reassigns to o_g (Fig. 7 lines 19–22, 31)", "[vlayer]") {
-  vlayer::VlConfig c;
+  vlayer_mc::VlConfig c;
   c.rows = 2;
   c.cols = 2;
   c.robots = 3;
-  const vlayer::Lattice l = c.lattice(); // region 2 = row 1, col 0: off Γ, Γ in row 0
+  const vlayer_mc::Lattice l = c.lattice(); // region 2 = row 1, col 0: off Γ, Γ in row 0
   const Targets in_two{l.point(0, 3), l.point(1, 3), l.point(1, 4)};
   // 4 neighbours: In(2) = {0}; ra = ⌊(3 − 1)/1⌋ = 2: robots 0, 1 to o_0; robot 2 stays.
-  CHECK(vlayer::compute_targets(c, 2, in_two, {0, 0}) ==
+  CHECK(vlayer_mc::compute_targets(c, 2, in_two, {0, 0}) ==
         Targets{l.centre(0), l.centre(0), l.point(1, 4)});
   // 8 neighbours: In(2) = {0, 1}; ra = ⌊2/2⌋ = 1 each.
   c.nbh = mc::Neighbourhood::eight;
-  CHECK(vlayer::compute_targets(c, 2, in_two, {0, 0, 0}) ==
+  CHECK(vlayer_mc::compute_targets(c, 2, in_two, {0, 0, 0}) ==
         Targets{l.centre(0), l.centre(1), l.point(1, 4)});
 }
 
 TEST_CASE("vlayer VN: collect, vn-update at e+d+eps, targets at e+2d+2eps", "[vlayer]") {
-  const vlayer::VlConfig c; // δ 6, e 0, d 1, eps 0: phases 1 and 2
-  const auto vn = vlayer::vn(c, 0);
+  const vlayer_mc::VlConfig c; // δ 6, e 0, d 1, eps 0: phases 1 and 2
+  const auto vn = vlayer_mc::vn(c, 0);
   Words s = start(vn);
   CHECK_FALSE(get(vn, s, "clock"));
   CHECK(has(steps(vn, s), "tick"));                  // nothing due without a clock

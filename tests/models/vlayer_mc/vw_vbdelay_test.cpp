@@ -8,9 +8,9 @@
 using namespace vl_test;
 
 TEST_CASE("vlayer VW: time(t)_u at time 0 and every eps_sample; VSA faults", "[vlayer]") {
-  vlayer::VlConfig c;
+  vlayer_mc::VlConfig c;
   c.eps_sample = 2;
-  const auto vw = vlayer::vw(c, false);
+  const auto vw = vlayer_mc::vw(c, false);
   Words s = start(vw);
   auto all = steps(vw, s);
   CHECK_FALSE(has(all, "tick"));
@@ -26,15 +26,15 @@ TEST_CASE("vlayer VW: time(t)_u at time 0 and every eps_sample; VSA faults", "[v
   CHECK_FALSE(has(steps(vw, s), "tick"));
   CHECK(has(steps(vw, s), "time_1(2)"));
 
-  const auto faulty = vlayer::vw(c, true);
+  const auto faulty = vlayer_mc::vw(c, true);
   CHECK(has(steps(faulty, start(faulty)), "fail_VN_1"));
   CHECK(has(steps(faulty, start(faulty)), "restart_VN_0"));
 }
 
 TEST_CASE("vlayer VBDelay: a cn-update is handed to VBcast within e", "[vlayer]") {
-  vlayer::VlConfig c;
+  vlayer_mc::VlConfig c;
   c.e = 1;
-  const auto delay = vlayer::vbdelay(c, 0);
+  const auto delay = vlayer_mc::vbdelay(c, 0);
   Words s = start(delay);
   CHECK(only(steps(delay, s), "vcast'_").empty());
   s = after(delay, s, "vcast_cn_update_0(6)");
@@ -48,6 +48,6 @@ TEST_CASE("vlayer VBDelay: a cn-update is handed to VBcast within e", "[vlayer]"
   CHECK(has(steps(delay, s), "tick"));
 
   c.e = 0;
-  const auto urgent = vlayer::vbdelay(c, 0);
+  const auto urgent = vlayer_mc::vbdelay(c, 0);
   CHECK_FALSE(has(steps(urgent, after(urgent, start(urgent), "vcast_cn_update_0(6)")), "tick"));
 }

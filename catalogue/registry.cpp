@@ -1,0 +1,165 @@
+#include "catalogue/registry.hpp"
+
+#include <algorithm>
+#include <charconv>
+
+#include "catalogue/fischer.hpp"
+#include "catalogue/mc_round.hpp"
+#include "catalogue/path_reservation.hpp"
+#include "catalogue/token_ring.hpp"
+#include "catalogue/vlayer_mc.hpp"
+#include "support/rational.hpp"
+
+namespace catalogue {
+
+namespace {
+
+std::string join(const std::vector<std::string>& parts) {
+  std::string out;
+  for (const auto& part : parts)
+    out += (out.empty() ? "" : ", ") + part;
+  return out;
+}
+
+} // namespace
+
+const char* to_string(ParamKind kind) {
+  switch (kind) {
+  case ParamKind::integer:
+    return "integer";
+  case ParamKind::rational:
+    return "rational";
+  case ParamKind::choice:
+    return "choice";
+  case ParamKind::text:
+    return "text";
+  }
+  return "?";
+}
+
+ParamSpec ParamSpec::choice(std::string name, std::string default_choice,
+                            std::vector<std::string> choices, std::string description) {
+  ParamSpec spec;
+  spec.name = std::move(name);
+  spec.default_value = ParamValue::choice(std::move(default_choice));
+  spec.description = std::move(description);
+  spec.kind = ParamKind::choice;
+  spec.choices = std::move(choices);
+  return spec;
+}
+
+ParamSpec ParamSpec::text(std::string name, std::string default_text, std::string description) {
+  ParamSpec spec;
+  spec.name = std::move(name);
+  spec.default_value = ParamValue::text(std::move(default_text));
+  spec.description = std::move(description);
+  spec.kind = ParamKind::text;
+  return spec;
+}
+
+std::string ParamSpec::range() const {
+  if (kind == ParamKind::choice)
+    return "{" + join(choices) + "}";
+  if (kind == ParamKind::text)
+    return "text";
+  if (kind == ParamKind::integer)
+    return lo.text() + ".." + hi.text();
+  return std::string(lo_open ? "(" : "[") + lo.text() + ", " + hi.text() + (hi_open ? ")" : "]");
+}
+
+const std::vector<ModelDefinition>& all_models() {
+  static const std::vector<ModelDefinition> models{token_ring_definition(), fischer_definition(),
+                                                   mc_round_definition(), vlayer_mc_definition(),
+                                                   path_reservation_definition()};
+  return models;
+}
+
+const ModelDefinition& find_model(const std::string& name) {
+  for (const auto& m : all_models())
+    if (m.name == name)
+      return m;
+  std::string known;
+  for (const auto& m : all_models())
+    known += (known.empty() ? "" : ", ") + m.name;
+  throw UsageError("unknown model '" + name + "' (known: " + known + ")");
+}
+
+ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::string>& settings) {
+  ParamValues values;
+  for (const auto& p : model.params)
+    values[p.name] = p.default_value;
+  for (const auto& setting : settings) {
+    const auto eq = setting.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw UsageError("parameter setting '" + setting + "' is not of the form name=value");
+    const std::string name = setting.substr(0, eq), text = setting.substr(eq + 1);
+    const ParamSpec* spec = nullptr;
+    for (const auto& p : model.params)
+      if (p.name == name)
+        spec = &p;
+    if (!spec) {
+      std::string known;
+      for (const auto& p : model.params)
+        known += (known.empty() ? "" : ", ") + p.name;
+      throw UsageError("model '" + model.name + "' has no parameter '" + name +
+                       "' (it has: " + known + ")");
+    }
+    if (spec->kind == ParamKind::choice) {
+      if (std::find(spec->choices.begin(), spec->choices.end(), text) == spec->choices.end())
+        throw UsageError("parameter " + name + ": '" + text + "' is not one of " +
+                         join(spec->choices));
+      values[name] = ParamValue::choice(text);
+      continue;
+    }
+    if (spec->kind == ParamKind::text) {
+      values[name] = ParamValue::text(text);
+      continue;
+    }
+    ParamValue value;
+    if (spec->kind == ParamKind::integer) {
+      std::int64_t whole = 0;
+      const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), whole);
+      if (error != std::errc() || end != text.data() + text.size() || text.empty())
+        throw UsageError("parameter " + name + ": '" + text + "' is not a whole number");
+      value = whole;
+    } else {
+      const auto rational = support::parse_rational(text);
+      if (!rational)
+        throw UsageError("parameter " + name + ": '" + text +
+                         "' is not a rational number (write 9/10, 0.9 or 2)");
+      value = ParamValue(*rational);
+    }
+    const bool below = spec->lo_open ? value <= spec->lo : value < spec->lo;
+    const bool above = spec->hi_open ? value >= spec->hi : value > spec->hi;
+    if (below || above)
+      throw UsageError("parameter " + name + " = " + text + " is out of range " + spec->range());
+    values[name] = value;
+  }
+  if (model.check_params)
+    if (auto why = model.check_params(values))
+      throw UsageError("model '" + model.name + "': " + *why);
+  return values;
+}
+
+std::vector<std::string> split_settings(const std::vector<std::string>& arguments) {
+  std::vector<std::string> settings;
+  for (const auto& argument : arguments) {
+    bool first = true;
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t comma = std::min(argument.find(',', start), argument.size());
+      const std::string piece = argument.substr(start, comma - start);
+      if (first || piece.find('=') != std::string::npos)
+        settings.push_back(piece);
+      else
+        settings.back() += "," + piece;
+      first = false;
+      if (comma == argument.size())
+        break;
+      start = comma + 1;
+    }
+  }
+  return settings;
+}
+
+} // namespace catalogue

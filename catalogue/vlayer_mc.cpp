@@ -1,0 +1,192 @@
+#include "catalogue/vlayer_mc.hpp"
+
+#include "models/vlayer_mc/vlayer.hpp"
+#include "proofs/vlayer_mc/legal_sets.hpp"
+#include "proofs/vlayer_mc/simulation.hpp"
+#include "proofs/vlayer_mc/stabilisation.hpp"
+#include "tioa/operators.hpp"
+
+namespace catalogue {
+
+namespace {
+
+int whole(const ParamValues& p, const char* name) {
+  return static_cast<int>(p.at(name).integer());
+}
+
+} // namespace
+
+vlayer_mc::VlConfig vlayer_config(const ParamValues& p) {
+  vlayer_mc::VlConfig c;
+  c.rows = whole(p, "rows");
+  c.cols = whole(p, "cols");
+  c.nbh = whole(p, "nbh") == 4 ? mc::Neighbourhood::four : mc::Neighbourhood::eight;
+  c.robots = whole(p, "robots");
+  c.b = whole(p, "b");
+  c.delta = whole(p, "delta");
+  c.d = whole(p, "d");
+  c.e = whole(p, "e");
+  c.eps = whole(p, "eps");
+  c.eps_sample = whole(p, "eps_sample");
+  c.d_r = whole(p, "d_r");
+  c.vmax = whole(p, "vmax");
+  c.k = whole(p, "k");
+  c.rho1 = p.at("rho1").rational();
+  c.rho2 = p.at("rho2").rational();
+  c.filter_targets = whole(p, "filter_targets") == 1;
+  return c;
+}
+
+ModelDefinition vlayer_mc_definition() {
+  ModelDefinition d;
+  d.name = "vlayer-mc";
+  d.description = "VLayer[MC]: RW, VW, VBcast, VBDelay, CN, VN composed as in seed 000 Def 4.1 "
+                  "and §5.5, on a rows x cols grid with a b x b lattice per region (time: quanta; "
+                  "models/vlayer_mc/README.md); robots start at the bottom-left corner, no node "
+                  "failed";
+  d.params = {
+      {"rows", 1, 1, 3, "rows of regions"},
+      {"cols", 2, 1, 3, "columns of regions"},
+      {"nbh", 4, 4, 8, "neighbourhood: 4 (seed 002) or 8 (seed 000 §4.1)"},
+      {"robots", 1, 1, 3, "number of robots (clients)"},
+      {"b", 2, 2, 8, "lattice units per region side (even)"},
+      {"delta", 6, 2, 64, "round length δ in quanta (seed 000 §5.5)"},
+      {"d", 1, 1, 16, "VBcast delay bound d"},
+      {"e", 0, 0, 16, "VBDelay bound e of the clients"},
+      {"eps", 0, 0, 16, "the slack ε of §5.4"},
+      {"eps_sample", 1, 1, 16, "largest gap between GPSupdates and between time updates"},
+      {"d_r", 1, 0, 16, "VN start-up time d_r"},
+      {"vmax", 4, 1, 16, "largest speed, lattice units per quantum in each coordinate"},
+      {"k", 1, 1, 3, "safe number of robots per region"},
+      {"rho1", ParamValue(mc::Rational(1, 2)), 0, 1, "damping of calctarget", ParamKind::rational,
+       true, true},
+      {"rho2", ParamValue(mc::Rational(9, 10)), 0, 1, "damping of assign", ParamKind::rational,
+       true, true},
+      {"robot_faults", 0, 0, 1, "1: robots fail and restart at any time (Fail(VBDelay_p||CN_p))"},
+      {"vsa_faults", 0, 0, 1, "1: VW fails and restarts VSAs at any time (Fail(VN_u))"},
+      {"filter_targets", 0, 0, 1,
+       "1: a CN ignores a target-update that arrives outside its window or that it cannot "
+       "reach in the round (README D28, finding F5)"},
+      {"samples", 1000, 1, 1000000,
+       "lemma-7.3/7.4, theorem-7.5: start states drawn from U(VLNodes) x R(env) when there are "
+       "more than 2 000 000 of them"},
+      {"seed", 1, 0, 1000000000, "seed of that draw"},
+      catalogue::ParamSpec::choice("rmc", "loose", {"loose", "strict", "loose-reg"},
+                                   "lemma-7.6/7.7: the reading of R_MC's unprinted parts (README "
+                                   "D19-D21, finding F4)"),
+      catalogue::ParamSpec::choice("window", "printed", {"printed", "closed"},
+                                   "Def 7.1(2), M_u nonempty: 'printed' (0, e+2d+2eps], 'closed' "
+                                   "[0, e+2d+2eps] (README, finding F1)")};
+  d.properties = {
+      {"no-timelock", "every reachable state has an action or a tick (reports the state count)"},
+      {"l1mc-closure", "L1MC (Def 7.1) is closed under steps and ticks, from every L1MC state "
+                       "the instance reaches"},
+      {"reset-in-l1mc", "ResetMC (Def 7.2) is inside L1MC: clauses (2)-(5) imply (1) on the "
+                        "reachable states and on ResetMC states built directly"},
+      {"lmc-closure", "LMC (the states reachable from ResetMC) is closed, lies inside L1MC and "
+                      "never stops"},
+      {"lemma-7.3", "U(VLNodes) with R(Vbcast||RW||VW) is in L1MC from eps_sample + 1 on "
+                    "(measured worst time and witness; start states sampled when too many)"},
+      {"lemma-7.4", "from the L1MC states reached, LMC within delta + d + e (measured)"},
+      {"theorem-7.5", "U(VLNodes) with R(Vbcast||RW||VW) in LMC within delta + d + e + "
+                      "eps_sample, directly and through Lemma 3.4"},
+      {"lemma-7.6", "R_MC (seed 000 §7.3) is a simulation relation, on the pairs reached from "
+                    "Lemma 7.7's pairs"},
+      {"lemma-7.7", "every state of the reset family is R_MC-related to a reachable state"}};
+  d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
+    if (p.at("nbh") != 4 && p.at("nbh") != 8)
+      return "nbh must be 4 or 8, not " + p.at("nbh").text();
+    return vlayer_mc::invalid(vlayer_config(p));
+  };
+  d.build = [](const ParamValues& p) {
+    const vlayer_mc::VlConfig c = vlayer_config(p);
+    const vlayer_mc::Lattice lattice = c.lattice();
+    const vlayer_mc::Faults faults{.robots = p.at("robot_faults") == 1,
+                                   .vsas = p.at("vsa_faults") == 1};
+    const tioa::Automaton layer = vlayer_mc::vlayer(c, faults);
+    std::vector<vlayer_mc::Point> at;
+    for (int robot = 0; robot < c.robots; ++robot)
+      at.push_back(lattice.point(robot, lattice.height() - 1));
+    const auto window = p.at("window").text() == "closed" ? vlayer_mc::MWindow::closed
+                                                          : vlayer_mc::MWindow::as_printed;
+    ModelInstance m{tioa::Start(layer, vlayer_mc::placed_start(layer, at)), {}, "1 time unit"};
+    const tioa::Automaton system = m.system;
+    const std::string rmc_text = p.at("rmc").text();
+    const vlayer_mc::RmcReading reading = rmc_text == "strict" ? vlayer_mc::RmcReading::strict
+                                          : rmc_text == "loose-reg"
+                                              ? vlayer_mc::RmcReading::loose_reg
+                                              : vlayer_mc::RmcReading::loose;
+    const vlayer_mc::ArbitraryStarts starts{
+        .samples = static_cast<std::uint64_t>(p.at("samples").integer()),
+        .seed = static_cast<std::uint64_t>(p.at("seed").integer())};
+    const auto custom = [](std::string name, std::string description,
+                           std::function<checker::PropertyResult(const checker::ExploreOptions&)>
+                               run) {
+      return checker::Property{
+          std::move(name), std::move(description), checker::PropertyKind::custom, {}, "", {}, "",
+          std::move(run)};
+    };
+    m.properties = {
+        custom("no-timelock", "every reachable state has an action or a tick",
+               [=](const checker::ExploreOptions& o) {
+                 checker::PropertyResult r = checker::check_no_deadlock(system, o);
+                 vlayer_mc::note_round_length(c, r);
+                 return r;
+               }),
+        custom("l1mc-closure", "L1MC is closed under steps and ticks (seed 000 Def 7.1, §7.1)",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer_mc::check_l1mc_closure(c, system, window, o);
+               }),
+        custom("reset-in-l1mc", "every ResetMC state is in L1MC (seed 000 Def 7.2)",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer_mc::check_reset_in_l1mc(c, system, window, o);
+               }),
+        custom("lmc-closure", "LMC, the states reachable from ResetMC, is a legal set inside L1MC",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer_mc::check_lmc_closure(c, layer, window, o);
+               }),
+        custom("lemma-7.3", "VLNodes[MC] stabilises to L1MC in time t > eps_sample (seed 000 §7.2)",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer_mc::check_lemma_7_3(c, window, starts, o);
+               }),
+        custom("lemma-7.4", "from L1MC, in LMC within delta + d + e (seed 000 §7.2)",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer_mc::check_lemma_7_4(c, window, starts, o);
+               }),
+        custom("theorem-7.5", "VLNodes[MC] stabilises to LMC in delta + d + e + eps_sample",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer_mc::check_theorem_7_5(c, window, starts, o);
+               }),
+        custom("lemma-7.6", "R_MC is a simulation relation for VLayer[MC] (seed 000 §7.3)",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer_mc::check_lemma_7_6(c, layer, window, o, reading);
+               }),
+        custom("lemma-7.7", "each ResetMC state is R_MC-related to a reachable state (§7.3)",
+               [=](const checker::ExploreOptions& o) {
+                 return vlayer_mc::check_lemma_7_7(c, layer, window, o, reading);
+               })};
+    return m;
+  };
+  // Each well under a few seconds (tests/models/vlayer_mc/*_test.cpp pin the counts).
+  const ParamValues closed_1x1{{"window", ParamValue::choice("closed")}, {"cols", 1}};
+  d.suite = {{{}, "no-timelock", checker::Verdict::holds},
+             {{}, "l1mc-closure", checker::Verdict::violated}, // finding F1
+             {closed_1x1, "l1mc-closure", checker::Verdict::holds},
+             {{{"window", ParamValue::choice("closed")}, {"cols", 1}, {"delta", 4}},
+              "l1mc-closure",
+              checker::Verdict::violated}, // δ breaks the round-length rule
+             {{{"cols", 1}}, "reset-in-l1mc", checker::Verdict::holds},
+             {{}, "lmc-closure", checker::Verdict::violated}, // F1 from a ResetMC state
+             {closed_1x1, "lmc-closure", checker::Verdict::holds},
+             // §7.2 on 1×1 (a second or two each): 7.3 and 7.5 start from a sample of
+             // U(VLNodes) x R(env), so "incomplete" is their honest verdict.
+             {closed_1x1, "lemma-7.3", checker::Verdict::incomplete},
+             {closed_1x1, "lemma-7.4", checker::Verdict::holds},
+             {closed_1x1, "theorem-7.5", checker::Verdict::incomplete},
+             // §7.3 on 1×1: R_MC is a simulation; Lemma 7.7 fails as printed (finding F4).
+             {closed_1x1, "lemma-7.6", checker::Verdict::holds},
+             {closed_1x1, "lemma-7.7", checker::Verdict::violated}};
+  return d;
+}
+
+} // namespace catalogue

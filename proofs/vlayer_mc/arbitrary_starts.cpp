@@ -1,0 +1,146 @@
+#include "proofs/vlayer_mc/arbitrary_starts.hpp"
+
+#include <random>
+
+#include "checker/explorer.hpp"
+
+namespace vlayer_mc {
+
+namespace {
+
+using tioa::Word;
+
+std::string count(std::uint64_t n) {
+  return std::to_string(n);
+}
+
+// Reach(RW ‖ VW ‖ VBcast ‖ ClientFaults), its inputs from the nodes free: all of it when it
+// has at most `limit` states, else `samples` states at the ends of seeded random walks of up
+// to 8δ steps from its start states (every one reachable, not drawn uniformly).
+struct EnvironmentStates {
+  StateList states;
+  bool all = false;
+};
+
+EnvironmentStates environment_states(const tioa::Automaton& env, std::uint64_t limit,
+                                     const ArbitraryStarts& a, int delta,
+                                     const checker::ExploreOptions& options) {
+  const tioa::SuccessorGenerator generator(env);
+  const std::uint32_t words = env.words();
+  checker::ExploreOptions bounded = options;
+  bounded.limits.max_states = limit;
+  const checker::Exploration reach = checker::explore(generator, env.start(), bounded);
+  EnvironmentStates out{{words, {}}, reach.complete()};
+  if (out.all) {
+    for (checker::StateId id = 0; id < reach.store.size(); ++id)
+      out.states.data.insert(out.states.data.end(), reach.store.state(id),
+                             reach.store.state(id) + words);
+    return out;
+  }
+  StateList starts{words, {}};
+  std::vector<Word> buffer(words + 1, 0);
+  env.start().enumerate(buffer.data(), 0, [&] {
+    starts.data.insert(starts.data.end(), buffer.begin(), buffer.end() - 1);
+  });
+  std::mt19937_64 random(a.seed ^ 0x5eedULL);
+  std::vector<Word> at(words), scratch(words + 1), next;
+  for (std::uint64_t n = 0; n < a.samples; ++n) {
+    const std::size_t first =
+        std::uniform_int_distribution<std::size_t>(0, starts.size() - 1)(random);
+    std::copy_n(starts.data.begin() + static_cast<std::ptrdiff_t>(first * words), words,
+                at.begin());
+    const int length = std::uniform_int_distribution<int>(0, 8 * delta)(random);
+    for (int step = 0; step < length; ++step) {
+      next.clear();
+      generator.successors(at.data(), scratch.data(), [&](const Word* successor, const auto&) {
+        next.insert(next.end(), successor, successor + words);
+      });
+      if (next.empty())
+        break;
+      const std::size_t pick =
+          std::uniform_int_distribution<std::size_t>(0, next.size() / words - 1)(random);
+      std::copy_n(next.begin() + static_cast<std::ptrdiff_t>(pick * words), words, at.begin());
+    }
+    out.states.data.insert(out.states.data.end(), at.begin(), at.end());
+  }
+  return out;
+}
+
+} // namespace
+
+UStarts u_starts(const VlConfig& c, const ArbitraryStarts& a,
+                 const checker::ExploreOptions& options) {
+  UStarts u{vlayer(c, after_t0), {}, false, 0, 0, ""};
+  const tioa::Automaton env = environment(c, after_t0);
+  const EnvironmentStates reach = environment_states(env, a.environment_limit, a, c.delta, options);
+  u.environment_states = reach.states.size();
+
+  // Where each environment variable sits in VLayer[MC]; the rest are the nodes' variables.
+  std::vector<std::pair<tioa::Slot, tioa::Slot>> env_slots;
+  std::vector<const tioa::VariableInfo*> node_variables;
+  for (const auto& v : u.layer.layout().variables()) {
+    if (const tioa::VariableInfo* e = env.layout().find(v.name))
+      env_slots.emplace_back(e->slot(), v.slot());
+    else
+      node_variables.push_back(&v);
+  }
+  u.space = static_cast<long double>(u.environment_states);
+  for (const auto* v : node_variables)
+    u.space *= static_cast<long double>(v->code_count());
+
+  const std::uint32_t words = u.layer.words();
+  u.states.words = words;
+  std::vector<Word> buffer(words + 1, 0);
+  tioa::State s(buffer.data(), 0);
+  const auto place_environment = [&](std::size_t id) {
+    const tioa::State e(reach.states.data.data() + id * reach.states.words, 0);
+    for (const auto& [from, to] : env_slots)
+      s.set_code(to, e.code(from));
+  };
+  const auto push = [&] {
+    u.states.data.insert(u.states.data.end(), buffer.begin(), buffer.end() - 1);
+  };
+
+  u.exhaustive = reach.all && u.space <= static_cast<long double>(a.exhaustive_limit);
+  if (u.exhaustive) {
+    for (std::size_t id = 0; id < reach.states.size(); ++id) {
+      place_environment(id);
+      std::vector<std::uint64_t> digits(node_variables.size(), 0);
+      while (true) {
+        for (std::size_t i = 0; i < digits.size(); ++i)
+          s.set_code(node_variables[i]->slot(), digits[i]);
+        push();
+        std::size_t i = 0;
+        while (i < digits.size() && ++digits[i] == node_variables[i]->code_count())
+          digits[i++] = 0;
+        if (i == digits.size())
+          break;
+      }
+    }
+    u.covered =
+        "every start state of U(VLNodes) || R(RW || VW || VBcast): " + count(u.states.size());
+    return u;
+  }
+  std::mt19937_64 random(a.seed);
+  for (std::uint64_t n = 0; n < a.samples; ++n) {
+    place_environment(
+        std::uniform_int_distribution<std::size_t>(0, reach.states.size() - 1)(random));
+    for (const auto* v : node_variables)
+      s.set_code(v->slot(),
+                 std::uniform_int_distribution<std::uint64_t>(0, v->code_count() - 1)(random));
+    push();
+  }
+  char space[32];
+  std::snprintf(space, sizeof space, "%.2Le", u.space);
+  u.covered = count(a.samples) + " start states drawn at random (seed " + count(a.seed) +
+              ") from U(VLNodes) || R(RW || VW || VBcast), " +
+              (reach.all ? "which has " + std::string(space) + " (" + count(u.environment_states) +
+                               " reachable states of the environment times every valuation of "
+                               "the nodes)"
+                         : "with the environment's state at the end of a random walk (it has "
+                           "more than " +
+                               count(a.environment_limit) + " reachable states)");
+  return u;
+}
+
+} // namespace vlayer_mc

@@ -1,0 +1,39 @@
+#pragma once
+// The start states of U(VLNodes) ‖ R(RW ‖ VW ‖ VBcast ‖ ClientFaults) (seed 000 §7.2) as
+// states of VLayer[MC] with no fault action enabled (faults before t0 only: D13): all of
+// them when there are few enough, else a seeded sample (proofs/vlayer_mc/stabilisation.hpp).
+
+#include <cstdint>
+#include <string>
+
+#include "checker/options.hpp"
+#include "models/vlayer_mc/config.hpp"
+#include "models/vlayer_mc/state_list.hpp"
+#include "models/vlayer_mc/vlayer.hpp"
+
+namespace vlayer_mc {
+
+struct ArbitraryStarts {
+  std::uint64_t samples = 1000;
+  std::uint64_t seed = 1;
+  std::uint64_t exhaustive_limit = 2'000'000;
+  // Reach(env) is listed when it has at most this many states, else walked at random.
+  std::uint64_t environment_limit = 200'000;
+};
+
+// VLayer[MC] after t0: no failure or restart of robots or VSAs.
+inline constexpr Faults after_t0{.robots = false, .vsas = false};
+
+struct UStarts {
+  tioa::Automaton layer; // VLayer[MC] with the faults of `after_t0`
+  StateList states;
+  bool exhaustive = false;
+  long double space = 0; // |valuations of VLNodes| · |Reach(env)|
+  std::uint64_t environment_states = 0;
+  std::string covered; // what was drawn, for the figure `covered`
+};
+
+UStarts u_starts(const VlConfig& config, const ArbitraryStarts& starts,
+                 const checker::ExploreOptions& options);
+
+} // namespace vlayer_mc

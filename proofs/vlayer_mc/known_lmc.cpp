@@ -1,0 +1,110 @@
+#include "proofs/vlayer_mc/known_lmc.hpp"
+
+#include "checker/explorer.hpp"
+#include "models/vlayer_mc/lmc.hpp"
+#include "models/vlayer_mc/names.hpp"
+#include "models/vlayer_mc/slots.hpp"
+#include "models/vlayer_mc/state_list.hpp"
+#include "tioa/operators.hpp"
+
+namespace vlayer_mc {
+
+using tioa::Word;
+
+KnownLmc::KnownLmc(const VlConfig& c, const tioa::Automaton& layer,
+                   const checker::ExploreOptions& o, const tioa::StatePredicate& stop_at)
+    : words_(layer.words()), family_{layer.words(), {}} {
+  for (int p = 0; p < c.robots; ++p)
+    nodes_.push_back(node(layer, names::cn_name(p) + "."));
+  for (int u = 0; u < c.lattice().regions(); ++u)
+    nodes_.push_back(node(layer, names::vn_name(u) + "."));
+  const auto slot = [&](const std::string& name) { return need_slot(layer, name, "LMC"); };
+  const auto guarded = [&](const std::string& guard, std::vector<std::string> rest) {
+    Guarded g{slot(guard), {}};
+    for (const auto& name : rest)
+      g.rest.emplace_back(slot(name), layer.layout().find(name)->initial_code.value_or(0));
+    slots_.push_back(std::move(g));
+  };
+  const auto at = [](const std::string& name, int i) {
+    return name + "[" + std::to_string(i) + "]";
+  };
+  const int robots = c.robots, regions = c.lattice().regions();
+  for (int p = 0; p < robots; ++p) {
+    velocities_.emplace_back(slot(at("RW.vel", p)), slot(at("RW.loc", p)));
+    const std::string cn = names::cn_name(p) + ".delay.";
+    guarded(cn + "held", {cn + "age", cn + "loc"});
+    guarded(at("VBcast.cn_pending", p), {at("VBcast.cn_age", p), at("VBcast.cn_loc", p)});
+  }
+  for (int u = 0; u < regions; ++u)
+    guarded(at("VBcast.vn_mask", u), {at("VBcast.vn_age", u), at("VBcast.vn_count", u)});
+  for (int i = 0; i < regions * robots; ++i)
+    guarded(at("VBcast.tu_pending", i), {at("VBcast.tu_age", i), at("VBcast.tu_target", i)});
+  std::vector<Word> buffer(words_ + 1, 0);
+  reset_family(c, layer).enumerate(buffer.data(), 0, [&] {
+    for (std::uint64_t mask = 0; mask < (std::uint64_t{1} << nodes_.size()); ++mask) {
+      std::vector<Word> s(buffer.begin(), buffer.end() - 1); // `buffer` is the enumeration's
+      tioa::State state(s.data(), 0);
+      for (std::size_t n = 0; n < nodes_.size(); ++n)
+        state.set_code(nodes_[n].failed, (mask >> n) & 1);
+      family_.data.insert(family_.data.end(), s.begin(), s.end());
+    }
+  });
+  const tioa::Automaton from = from_family(layer);
+  const tioa::SuccessorGenerator generator(from);
+  checker::ExploreHooks hooks;
+  hooks.canonical = [this](Word* w) {
+    tioa::State state(w, 0);
+    canonical(state);
+  };
+  if (stop_at)
+    hooks.target = [&stop_at](const Word* w) { return stop_at(tioa::State(w, 0)); };
+  ex_ = std::make_shared<checker::Exploration>(checker::explore(generator, from.start(), o, hooks));
+}
+
+tioa::Automaton KnownLmc::from_family(const tioa::Automaton& layer) const {
+  return tioa::Start(layer, family_.start(layer, "the reset family with every combination of "
+                                                 "failed nodes"));
+}
+
+bool KnownLmc::contains(const tioa::State& s) const {
+  thread_local std::vector<Word> copy;
+  copy.assign(s.words(), s.words() + words_);
+  tioa::State state(copy.data(), 0);
+  canonical(state);
+  return ex_->store.find(copy.data(), checker::hash_state(copy.data(), words_)).has_value();
+}
+
+std::vector<Word> KnownLmc::representative(const tioa::State& s) const {
+  std::vector<Word> copy(s.words(), s.words() + words_);
+  tioa::State state(copy.data(), 0);
+  canonical(state);
+  return copy;
+}
+
+KnownLmc::Node KnownLmc::node(const tioa::Automaton& layer, const std::string& prefix) {
+  Node n{need_slot(layer, prefix + "failed", "LMC"), {}};
+  for (const auto& v : layer.layout().variables())
+    if (v.name.rfind(prefix, 0) == 0 && v.name != prefix + "failed")
+      n.rest.emplace_back(v.slot(), v.initial_code.value_or(0));
+  return n;
+}
+
+void KnownLmc::canonical(tioa::State& s) const {
+  // RW.vel(p) = ⊥ and "steer to the point it stands on" move the robot exactly as 0 does
+  // (D8, D27), and every velocity output overwrites them.
+  for (const auto& [vel, loc] : velocities_) {
+    const std::uint64_t code = s.code(vel);
+    if (code == vel.value_codes || code == s.code(loc) + 1) // ⊥, or the point of loc
+      s.set_code(vel, 0);                                   // zero_velocity
+  }
+  for (const Guarded& g : slots_)
+    if (s.code(g.guard) == 0)
+      for (const auto& [slot, code] : g.rest)
+        s.set_code(slot, code);
+  for (const Node& n : nodes_)
+    if (s.code(n.failed) != 0)
+      for (const auto& [slot, code] : n.rest)
+        s.set_code(slot, code);
+}
+
+} // namespace vlayer_mc

@@ -1,0 +1,121 @@
+#include "proofs/vlayer_mc/rmc_matching.hpp"
+
+#include <algorithm>
+#include <cstdint>
+
+#include "models/vlayer_mc/lmc.hpp"
+#include "models/vlayer_mc/reset_mc.hpp"
+#include "models/vlayer_mc/slots.hpp"
+#include "tioa/successors.hpp"
+
+namespace vlayer_mc {
+
+namespace {
+
+using checker::StateId;
+using tioa::Slot;
+using tioa::Word;
+
+std::vector<std::vector<Word>> family_states(const VlConfig& c, const tioa::Automaton& layer) {
+  std::vector<std::vector<Word>> out;
+  std::vector<Word> buffer(layer.words() + 1, 0);
+  reset_family(c, layer).enumerate(buffer.data(), 0, [&] { out.push_back(buffer); });
+  return out;
+}
+
+} // namespace
+
+tioa::StartSet every_placement(const VlConfig& c, const tioa::Automaton& layer) {
+  const int points = c.lattice().points();
+  const std::uint32_t words = layer.words();
+  std::vector<Word> base(words + 1, 0), all;
+  tioa::State s(base.data(), 0);
+  for (const auto& v : layer.layout().variables())
+    s.set_code(v.slot(), v.initial_code.value_or(0)); // Fail's `failed`: false
+  std::vector<Slot> loc;
+  for (int p = 0; p < c.robots; ++p)
+    loc.push_back(need_slot(layer, "RW.loc[" + std::to_string(p) + "]", "Reach"));
+  std::uint64_t placements = 1;
+  for (int p = 0; p < c.robots; ++p)
+    placements *= static_cast<std::uint64_t>(points);
+  for (std::uint64_t index = 0; index < placements; ++index) {
+    std::vector<Word> buffer = base;
+    tioa::State t(buffer.data(), 0);
+    std::uint64_t rest = index;
+    for (const Slot& slot : loc) {
+      t.set<int>(slot, static_cast<int>(rest % static_cast<std::uint64_t>(points)));
+      rest /= static_cast<std::uint64_t>(points);
+    }
+    all.insert(all.end(), buffer.begin(), buffer.begin() + words);
+  }
+  return tioa::StartSet::listed(layer.layout().bits(), words, std::move(all),
+                                "VLayer[MC] with failures and restarts of robots and VSAs, from "
+                                "every placement of the robots with no node failed");
+}
+
+void require_same_layer(const tioa::Automaton& a, const tioa::Automaton& b) {
+  const auto& va = a.layout().variables();
+  const auto& vb = b.layout().variables();
+  bool same = va.size() == vb.size() && a.actions().size() == b.actions().size();
+  for (std::size_t i = 0; same && i < va.size(); ++i)
+    same = va[i].name == vb[i].name && va[i].slot().offset == vb[i].slot().offset;
+  for (std::size_t i = 0; same && i < a.actions().size(); ++i)
+    same = a.actions()[i].name == b.actions()[i].name;
+  if (!same)
+    throw tioa::ModelError("R_MC: " + a.name() + " is not VLayer[MC] of this configuration");
+}
+
+Matching match_family(const VlConfig& c, const tioa::Automaton& layer, const tioa::Automaton& full,
+                      MWindow window, const checker::ExploreOptions& options, RmcReading reading) {
+  const tioa::SuccessorGenerator generator(full);
+  Matching m(full.words());
+  m.reach = checker::explore(generator, every_placement(c, full), options);
+  m.family = family_states(c, layer);
+  m.related.resize(m.family.size());
+  m.matched.assign(m.family.size(), {false, false, false});
+  const ClauseCheck reset = reset_mc_clauses(c, layer, window);
+  for (const auto& x : m.family)
+    m.in_reset_mc += reset(tioa::State(x.data(), 0)).empty() ? 1 : 0;
+  if (!m.reach.complete())
+    return m;
+
+  const RmcRelation relation(c, full, reading);
+  std::vector<RmcRelation> each;
+  for (const RmcReading r : readings)
+    each.emplace_back(c, full, r);
+  // The index: every reachable state by the key all readings require equal.
+  std::vector<std::pair<std::uint64_t, StateId>> index;
+  index.reserve(m.reach.store.size());
+  for (StateId id = 0; id < m.reach.store.size(); ++id)
+    index.emplace_back(relation.key(m.reach.store.state(id)), id);
+  std::sort(index.begin(), index.end());
+  for (std::size_t i = 0; i < m.family.size(); ++i) {
+    const Word* x = m.family[i].data();
+    const auto key = relation.key(x);
+    auto at = std::lower_bound(index.begin(), index.end(), std::make_pair(key, StateId{0}));
+    for (; at != index.end() && at->first == key; ++at) {
+      const Word* y = m.reach.store.state(at->second);
+      if (relation.related(x, y))
+        m.related[i].push_back(at->second);
+      for (std::size_t r = 0; r < readings.size(); ++r)
+        m.matched[i][r] = m.matched[i][r] || each[r].related(x, y);
+    }
+  }
+  return m;
+}
+
+std::pair<StateId, std::vector<std::string>>
+closest(const RmcRelation& relation, const checker::Exploration& reach, const Word* x) {
+  std::pair<StateId, std::vector<std::string>> best{0, {}};
+  std::size_t fewest = SIZE_MAX;
+  for (StateId id = 0; id < reach.store.size(); ++id) {
+    auto broken = relation.broken(x, reach.store.state(id));
+    if (broken.size() < fewest) {
+      fewest = broken.size();
+      best = {id, std::move(broken)};
+    }
+  }
+  return best;
+}
+
+} // namespace vlayer_mc

@@ -1,0 +1,128 @@
+// The path-reservation model (models/path_reservation/): every scenario explored
+// exhaustively, its state count and the verdict of each property pinned; the broken
+// variant shows each safety check failing; the findings P1 and P2 of the README replayed.
+#include <catch2/catch.hpp>
+
+#include "catalogue/registry.hpp"
+#include "tests/catalogue/path_reservation/run_check.hpp"
+
+using checker::Verdict;
+using path_reservation_test::run;
+
+namespace {
+
+struct Pin {
+  const char* scenario;
+  std::uint64_t states, edges;
+  Verdict progress;
+};
+
+// Exact counts of the paper's protocol with sort=distance (every property explores the
+// same reachable states).
+const Pin pins[] = {
+    {"crossing", 50, 71, Verdict::holds},           {"head-on", 186, 286, Verdict::violated},
+    {"convoy", 1749, 4741, Verdict::holds},         {"cycle", 2475, 7224, Verdict::holds},
+    {"late-joiner", 2487, 6678, Verdict::violated},
+};
+
+} // namespace
+
+TEST_CASE("path-reservation: every scenario is safe, with its exact state count",
+          "[path-reservation]") {
+  for (const Pin& pin : pins) {
+    INFO(pin.scenario);
+    for (const char* property : {"mutual-exclusion", "integrity", "no-collision"}) {
+      INFO(property);
+      const auto r = run(pin.scenario, property);
+      CHECK(r.verdict == Verdict::holds);
+      CHECK(r.states == pin.states);
+      CHECK(r.edges == pin.edges);
+    }
+    const auto progress = run(pin.scenario, "progress");
+    CHECK(progress.verdict == pin.progress);
+    CHECK(progress.states == pin.states);
+  }
+}
+
+TEST_CASE("path-reservation: the four robots of pinwheel (1 149 348 states) stay apart",
+          "[path-reservation]") {
+  const auto r = run("pinwheel", "no-collision");
+  CHECK(r.verdict == Verdict::holds);
+  CHECK(r.states == 1149348);
+  CHECK(r.edges == 6088924);
+}
+
+TEST_CASE("path-reservation: releasing before reserving breaks every safety property",
+          "[path-reservation]") {
+  for (const char* property : {"mutual-exclusion", "integrity", "no-collision"}) {
+    INFO(property);
+    const auto r = run("crossing", property, {"variant=release-before-reserve"});
+    REQUIRE(r.verdict == Verdict::violated);
+    REQUIRE(r.trace);
+    CHECK(r.trace_kind == "invariant");
+  }
+  CHECK(run("crossing", "integrity", {"variant=release-before-reserve"}).trace->steps.size() == 10);
+}
+
+TEST_CASE("path-reservation: on the cycle of three cells every robot raises risk-cycle",
+          "[path-reservation]") {
+  for (const char* sort : {"distance", "id"}) {
+    INFO(sort);
+    const auto r = run("cycle", "progress", {std::string("sort=") + sort});
+    REQUIRE(r.verdict == Verdict::holds);
+    REQUIRE(r.trace); // the worst-case witness: it ends with all three halted
+    const auto& last = r.trace->steps.back();
+    const auto& definition = catalogue::find_model("path-reservation");
+    const auto instance = definition.build(
+        catalogue::resolve_params(definition, {"scenario=cycle", std::string("sort=") + sort}));
+    for (int robot = 1; robot <= 3; ++robot) {
+      const auto* info = instance.system.layout().find("exception[" + std::to_string(robot) + "]");
+      REQUIRE(info);
+      CHECK(info->render_code(tioa::State(last.state.data(), 0).code(info->slot())) ==
+            "risk-cycle");
+    }
+  }
+}
+
+TEST_CASE("path-reservation: finding P1, head-on robots wait for each other forever",
+          "[path-reservation]") {
+  const auto r = run("head-on", "progress");
+  REQUIRE(r.verdict == Verdict::violated);
+  REQUIRE(r.trace);
+  CHECK(r.trace_kind == "deadlock");
+  CHECK(r.trace->steps.size() == 15);
+  // The AfterMe R2 sent is dropped by R1, which has already taken R2's request as msg_2.
+  CHECK(r.trace->steps.back().action == "receive_AfterMe(2,1)");
+}
+
+TEST_CASE("path-reservation: the scenarios are checked, bad ones refused in one line",
+          "[path-reservation]") {
+  for (const auto& s : path_reservation::scenarios()) {
+    INFO(s.name);
+    CHECK_FALSE(path_reservation::check_scenario(s));
+  }
+  path_reservation::Scenario far = path_reservation::find_scenario("crossing");
+  far.range = 4; // a chunk of three cells leaves Cir(start, C/2 = 2)
+  const auto why = path_reservation::check_scenario(far);
+  REQUIRE(why);
+  CHECK(why->find("Definition 4") != std::string::npos);
+  path_reservation::Scenario bent = far;
+  bent.range = 6;
+  bent.paths[0] = {{0, 2}, {2, 3}};
+  REQUIRE(path_reservation::check_scenario(bent));
+  CHECK(path_reservation::check_scenario(bent)->find("not horizontal, vertical or diagonal") !=
+        std::string::npos);
+  CHECK_THROWS_AS(path_reservation::find_scenario("nowhere"), std::invalid_argument);
+}
+
+TEST_CASE("path-reservation: zones, disks and distances on the plane", "[path-reservation]") {
+  const path_reservation::Plane plane(4, 4);
+  const auto zone = plane.zone({0, 2}, {3, 2});
+  CHECK(zone.pre == plane.bit({0, 2}));
+  CHECK(zone.post == plane.bit({3, 2}));
+  CHECK(__builtin_popcountll(zone.motion) == 4);
+  // Cir((0,0), 1.5) holds the cells at distance <= 1.5: (0,0), (1,0), (0,1), (1,1).
+  CHECK(__builtin_popcountll(plane.disk({0, 0}, 9)) == 4);
+  CHECK(plane.squared_distance({0, 0}, plane.bit({2, 2}) | plane.bit({3, 0})) == 8);
+  CHECK_THROWS_AS(path_reservation::Plane(9, 8), std::invalid_argument);
+}

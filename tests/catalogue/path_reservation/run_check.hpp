@@ -1,0 +1,29 @@
+#pragma once
+// Runs one property of `path-reservation` on a scenario, with any other parameters given
+// as the command line would ("msg_rule=any-zone"), on two threads.
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "catalogue/path_reservation.hpp"
+#include "catalogue/registry.hpp"
+#include "checker/property.hpp"
+
+namespace path_reservation_test {
+
+inline checker::PropertyResult run(const std::string& scenario, const std::string& property,
+                                   std::vector<std::string> settings = {}) {
+  const auto& definition = catalogue::find_model("path-reservation");
+  settings.push_back("scenario=" + scenario);
+  const auto instance = definition.build(catalogue::resolve_params(definition, settings));
+  for (const auto& p : instance.properties)
+    if (p.name == property) {
+      checker::ExploreOptions options;
+      options.threads = 2;
+      return checker::run_property(instance.system, p, options);
+    }
+  throw std::logic_error("test: no property " + property);
+}
+
+} // namespace path_reservation_test

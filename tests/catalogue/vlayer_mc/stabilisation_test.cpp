@@ -1,0 +1,76 @@
+// The stabilisation properties of `vlayer-mc` (proofs/vlayer_mc/stabilisation.hpp): Lemma 7.3,
+// Lemma 7.4 and Theorem 7.5 on the 1×1 grid with one robot and the cheap constants (δ = 6,
+// d = 1, e = ε = 0, ε_sample = 1, d_r = 1, v_max = 4), window closed, 1 000 start states drawn
+// with seed 1 from U(VLNodes) × R(env); and finding F5 on 1×2 (README).
+#include <catch2/catch.hpp>
+
+#include "checker/trace.hpp"
+#include "tests/catalogue/vlayer_mc/vl_results.hpp"
+
+using vl_test::figure;
+
+namespace {
+
+// Every run here reads Def 7.1(2) with the window closed (finding F1).
+vl_test::PropertyRun run(const std::string& property, std::vector<std::string> settings) {
+  settings.push_back("window=closed");
+  return vl_test::run_property(property, settings);
+}
+
+} // namespace
+
+// Sampled, so never "holds": the bound ε_sample + 1 = 2 is met, and reached.
+TEST_CASE("vlayer-mc lemma-7.3 on 1x1: in L1MC from time 2 on every sample", "[vlayer]") {
+  const auto [r, system] = run("lemma-7.3", {"cols=1"});
+  CHECK(r.verdict == checker::Verdict::incomplete);
+  CHECK(r.worst_time == 2u);
+  CHECK(figure(r, "bound") == "2 quanta");
+  CHECK_THAT(figure(r, "covered"), Catch::StartsWith("1000 start states drawn at random (seed 1)"));
+  CHECK_THAT(r.message, Catch::Contains("holds on every start state sampled"));
+  REQUIRE(r.trace);
+  CHECK(r.trace_role == "witness");
+}
+
+// Finding F5: on 1×2 a junk target-update (in R(Vbcast), or from a VSA whose clock was
+// wrong) moves the robot into the next region before the (4c) window opens, so it is outside
+// L1MC at time 2 = ε_sample + 1: a real counterexample. With filter_targets (D28) the CN
+// ignores such targets and every sample meets the bound.
+TEST_CASE("vlayer-mc lemma-7.3 on 1x2: finding F5, and D28", "[vlayer]") {
+  const auto [r, system] = run("lemma-7.3", {"samples=200"});
+  CHECK(r.verdict == checker::Verdict::violated);
+  CHECK(r.worst_time == 3u);
+  CHECK_THAT(r.message, Catch::Contains("breaks (4c) CN_0"));
+  REQUIRE(r.trace);
+  CHECK(r.trace_role == "counterexample");
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(system), *r.trace, &why));
+
+  const auto filtered = run("lemma-7.3", {"samples=200", "filter_targets=1"}).result;
+  CHECK(filtered.verdict == checker::Verdict::incomplete);
+  CHECK(filtered.worst_time == 2u);
+}
+
+TEST_CASE("vlayer-mc lemma-7.4 on 1x1: from the L1MC states reached, LMC within 7", "[vlayer]") {
+  const auto [r, system] = run("lemma-7.4", {"cols=1"});
+  CHECK(r.verdict == checker::Verdict::holds);
+  CHECK(r.worst_time == 6u);
+  CHECK(figure(r, "bound") == "7 quanta");
+  CHECK_THAT(
+      figure(r, "known LMC"),
+      Catch::StartsWith("2253 classes (D29) of the states reachable from 144 ResetMC states"));
+  CHECK_THAT(figure(r, "covered"), Catch::Contains("not all of L1MC"));
+}
+
+TEST_CASE("vlayer-mc theorem-7.5 on 1x1: directly and through Lemma 3.4", "[vlayer]") {
+  const auto [r, system] = run("theorem-7.5", {"cols=1"});
+  CHECK(r.verdict == checker::Verdict::incomplete); // sampled start states
+  CHECK(r.worst_time == 6u);
+  CHECK(figure(r, "bound") == "8 quanta");
+  CHECK(figure(r, "t1 (start -> L1MC, Lemma 7.3)") == "2");
+  CHECK(figure(r, "t2 (L1MC -> LMC, Lemma 7.4)") == "6");
+  CHECK(figure(r, "t (start -> LMC, direct)") == "6");
+  bool transitivity = false;
+  for (const auto& note : r.notes)
+    transitivity = transitivity || note == "Lemma 3.4: t = 6 <= t1 + t2 = 8";
+  CHECK(transitivity);
+}
