@@ -47,7 +47,7 @@
 
 #include "checker/result.hpp"
 #include "models/mc/positions.hpp"
-#include "proofs/lemma_6_5.hpp"
+#include "proofs/fixpoint_lemma.hpp"
 
 namespace proofs {
 
