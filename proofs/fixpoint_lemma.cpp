@@ -13,8 +13,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::string join(const std::vector<std::string> &parts,
-                 const std::string &separator = ", ") {
+std::string join(const std::vector<std::string>& parts, const std::string& separator = ", ") {
   std::string out;
   for (std::size_t i = 0; i < parts.size(); ++i)
     out += (i ? separator : "") + parts[i];
@@ -22,7 +21,7 @@ std::string join(const std::vector<std::string> &parts,
 }
 
 // "7/2 (3.5)"; whole numbers without the decimal.
-std::string show(const mc::Rational &r) {
+std::string show(const mc::Rational& r) {
   std::string out = mc::to_string(r);
   if (denominator(r) != 1) {
     char buffer[32];
@@ -32,23 +31,54 @@ std::string show(const mc::Rational &r) {
   return out;
 }
 
-std::vector<std::int64_t> as_values(const std::vector<QuantisedLength> &q) {
+std::vector<std::int64_t> as_values(const std::vector<QuantisedLength>& q) {
   return {q.begin(), q.end()};
 }
 
-// Fewer robots, then the smaller grid; ties keep the first in enumeration
-// order.
-bool smaller(const BoundWitness &a, const BoundWitness &b) {
-  if (a.robots() != b.robots())
-    return a.robots() < b.robots();
-  return a.setting.m < b.setting.m;
+struct Tallies {
+  std::vector<BoundTally> claims;
+  std::uint64_t instances = 0, skipped = 0, rounds = 0;
+
+  explicit Tallies(const FixpointLemma& lemma) {
+    for (const BoundClaim& c : lemma.claims)
+      claims.push_back({.claim = c});
+  }
+
+  void add(Tallies& other) {
+    instances += other.instances;
+    skipped += other.skipped;
+    rounds += other.rounds;
+    for (std::size_t i = 0; i < claims.size(); ++i)
+      claims[i].merge(std::move(other.claims[i]), closer_to_bound);
+  }
+};
+
+// One claim measured on one run.
+void record(BoundTally& tally, const FixpointInstance& instance, Measurement&& measurement) {
+  tally.record_measurement(
+      measurement,
+      [&] {
+        return BoundWitness{tally.claim.id,
+                            instance.setting,
+                            instance.start,
+                            measurement,
+                            instance.run.t_out,
+                            instance.run.t_stab,
+                            instance.run.fixpoint_round};
+      },
+      closer_to_bound);
 }
 
-// value/bound compared exactly: is a closer to its bound than b? A violation
-// (value > bound) or a positive value over a zero bound counts as closest.
-bool tighter(const Measurement &a, const Measurement &b) {
-  const bool a_inf = a.bound <= 0 && a.value > a.bound,
-             b_inf = b.bound <= 0 && b.value > b.bound;
+std::string where(const BoundWitness& w) {
+  return describe(w.setting) + ", " + std::to_string(w.robots()) + " robots";
+}
+
+} // namespace
+
+// ---- BoundWitness, BoundTally
+
+bool closer_to_bound(const Measurement& a, const Measurement& b) {
+  const bool a_inf = a.bound <= 0 && a.value > a.bound, b_inf = b.bound <= 0 && b.value > b.bound;
   if (a_inf || b_inf)
     return a_inf && !b_inf;
   if (a.bound <= 0 || b.bound <= 0)
@@ -57,136 +87,53 @@ bool tighter(const Measurement &a, const Measurement &b) {
   return a.value * b.bound > b.value * a.bound;
 }
 
-struct Tallies {
-  std::vector<BoundTally> claims;
-  std::uint64_t instances = 0, skipped = 0, rounds = 0;
-
-  explicit Tallies(const FixpointLemma &lemma) {
-    for (const BoundClaim &c : lemma.claims) {
-      BoundTally tally;
-      tally.claim = c;
-      claims.push_back(std::move(tally));
-    }
-  }
-
-  void add(Tallies &other) {
-    instances += other.instances;
-    skipped += other.skipped;
-    rounds += other.rounds;
-    for (std::size_t i = 0; i < claims.size(); ++i) {
-      BoundTally &mine = claims[i];
-      BoundTally &theirs = other.claims[i];
-      mine.premise += theirs.premise;
-      mine.violations += theirs.violations;
-      if (theirs.largest &&
-          (!mine.largest ||
-           theirs.largest->measurement.value > mine.largest->measurement.value))
-        mine.largest = std::move(theirs.largest);
-      if (theirs.tightest &&
-          (!mine.tightest ||
-           tighter(theirs.tightest->measurement, mine.tightest->measurement)))
-        mine.tightest = std::move(theirs.tightest);
-      if (theirs.smallest &&
-          (!mine.smallest || smaller(*theirs.smallest, *mine.smallest)))
-        mine.smallest = std::move(theirs.smallest);
-    }
-  }
-};
-
-void record(BoundTally &tally, const FixpointInstance &instance,
-            Measurement &&measurement) {
-  ++tally.premise;
-  auto witness = [&] {
-    return BoundWitness{tally.claim.id,
-                        instance.setting,
-                        instance.start,
-                        measurement,
-                        instance.run.t_out,
-                        instance.run.t_stab,
-                        instance.run.fixpoint_round};
-  };
-  const bool violated = measurement.value > measurement.bound;
-  if (!tally.largest || measurement.value > tally.largest->measurement.value)
-    tally.largest = witness();
-  if ((measurement.bound > 0 || violated) &&
-      (!tally.tightest || tighter(measurement, tally.tightest->measurement)))
-    tally.tightest = witness();
-  if (violated) {
-    ++tally.violations;
-    BoundWitness w = witness();
-    if (!tally.smallest || smaller(w, *tally.smallest))
-      tally.smallest = std::move(w);
-  }
+bool closer_to_bound_first_violation(const Measurement& a, const Measurement& b) {
+  const bool a_over = a.value > a.bound, b_over = b.value > b.bound;
+  if (a_over || b_over)
+    return a_over && !b_over;
+  return a.value * b.bound > b.value * a.bound;
 }
-
-std::string where(const BoundWitness &w) {
-  return describe(w.setting) + ", " + std::to_string(w.robots()) + " robots";
-}
-
-} // namespace
-
-// ---- BoundWitness, BoundTally, FixpointCheck
 
 std::vector<std::string> BoundWitness::lines() const {
   const int m = setting.m;
   std::vector<std::string> out;
-  out.push_back("claim " + claim +
-                (violated() ? ": counterexample" : ": worst case") + ", " +
+  out.push_back("claim " + claim + (violated() ? ": counterexample" : ": worst case") + ", " +
                 where(*this));
   out.push_back("  q (units of sigma):");
-  for (std::string &line : matrix_lines(m, as_values(setting.q), "    ", true))
+  for (std::string& line : matrix_lines(m, as_values(setting.q), "    ", true))
     out.push_back(std::move(line));
   const mc::FixpointRun run = setting.system().run_to_fixpoint(start);
   const std::size_t shown = std::min<std::size_t>(run.rounds.size(), 40);
   for (std::size_t t = 0; t < shown; ++t) {
-    out.push_back("  M_" + std::to_string(t) +
-                  (t == run.fixpoint_round ? " (fixed point)" : "") +
-                  (t == run.t_out ? " (T_out)" : "") +
-                  (t == run.t_stab ? " (T_stab)" : "") + ":");
-    for (std::string &line : matrix_lines(
-             m, {run.rounds[t].begin(), run.rounds[t].end()}, "    ", true))
+    out.push_back("  M_" + std::to_string(t) + (t == run.fixpoint_round ? " (fixed point)" : "") +
+                  (t == run.t_out ? " (T_out)" : "") + (t == run.t_stab ? " (T_stab)" : "") + ":");
+    for (std::string& line :
+         matrix_lines(m, {run.rounds[t].begin(), run.rounds[t].end()}, "    ", true))
       out.push_back(std::move(line));
   }
   if (shown < run.rounds.size())
-    out.push_back("  … " + std::to_string(run.rounds.size() - shown) +
-                  " more rounds");
-  out.push_back("  T_out = " + std::to_string(t_out) +
-                ", T_stab = " + std::to_string(t_stab) +
+    out.push_back("  … " + std::to_string(run.rounds.size() - shown) + " more rounds");
+  out.push_back("  T_out = " + std::to_string(t_out) + ", T_stab = " + std::to_string(t_stab) +
                 ", fixed point at round " + std::to_string(fixpoint_round));
-  out.push_back("  measured " + show(measurement.value) +
-                (violated() ? " > " : " <= ") + "bound " +
+  out.push_back("  measured " + show(measurement.value) + (violated() ? " > " : " <= ") + "bound " +
                 show(measurement.bound) + ": " + measurement.detail);
   return out;
 }
 
-checker::Verdict BoundTally::verdict() const {
-  return violations > 0 ? checker::Verdict::violated : checker::Verdict::holds;
-}
-
-std::string BoundTally::summary() const {
-  std::string out = violations > 0
-                        ? "violated on " + std::to_string(violations) + " of " +
-                              std::to_string(premise) + " instances"
-                        : "holds on " + std::to_string(premise) + " instances";
+template <> std::string Tally<BoundWitness>::summary() const {
+  std::string out = violations > 0 ? "violated on " + std::to_string(violations) + " of " +
+                                         std::to_string(premise) + " instances"
+                                   : "holds on " + std::to_string(premise) + " instances";
   if (largest)
-    out += "; largest measured " + show(largest->measurement.value) +
-           " (its bound " + show(largest->measurement.bound) + ") at " +
-           where(*largest);
+    out += "; largest measured " + show(largest->measurement.value) + " (its bound " +
+           show(largest->measurement.bound) + ") at " + where(*largest);
   if (tightest)
-    out += "; closest to its bound " + show(tightest->measurement.value) +
-           " vs " + show(tightest->measurement.bound) + " at " +
-           where(*tightest);
+    out += "; closest to its bound " + show(tightest->measurement.value) + " vs " +
+           show(tightest->measurement.bound) + " at " + where(*tightest);
   if (smallest)
     out += "; smallest counterexample " + std::to_string(smallest->robots()) +
            " robots, m = " + std::to_string(smallest->setting.m);
   return out;
-}
-
-const BoundTally &FixpointCheck::claim(std::string_view id) const {
-  for (const BoundTally &c : claims)
-    if (c.claim.id == id)
-      return c;
-  throw std::out_of_range("no claim " + std::string(id));
 }
 
 // ---- The family and the check
@@ -198,15 +145,13 @@ Family fixpoint_family(mc::Neighbourhood neighbourhood) {
   return f;
 }
 
-mc::Rational rho3(const mc::RoundSystem &system) {
-  const QuantisedLength q_max =
-      *std::max_element(system.q().begin(), system.q().end());
+mc::Rational rho3(const mc::RoundSystem& system) {
+  const QuantisedLength q_max = *std::max_element(system.q().begin(), system.q().end());
   return mc::Rational(q_max * q_max) / (1 - system.params().rho2);
 }
 
-FixpointCheck check_fixpoint_family(const FixpointLemma &lemma,
-                                    const Family &family,
-                                    const CheckOptions &options) {
+FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& family,
+                                    const CheckOptions& options) {
   const auto start = Clock::now();
   const SettingList list = settings(family);
   const std::size_t n = list.settings.size();
@@ -216,13 +161,12 @@ FixpointCheck check_fixpoint_family(const FixpointLemma &lemma,
   auto work = [&] {
     std::vector<std::optional<Measurement>> out(lemma.claims.size());
     for (std::size_t i; (i = next.fetch_add(1)) < n;) {
-      const Setting &setting = list.settings[i];
+      const Setting& setting = list.settings[i];
       const mc::RoundSystem system = setting.system();
       const mc::Rational r3 = rho3(system);
-      Tallies &tallies = per_setting[i];
+      Tallies& tallies = per_setting[i];
       const Coverage coverage = for_each_configuration(
-          setting, family.use_symmetry,
-          [&](const Counts &counts, std::uint64_t) {
+          setting, family.use_symmetry, [&](const Counts& counts, std::uint64_t) {
             const mc::FixpointRun run = system.run_to_fixpoint(counts);
             ++tallies.instances;
             tallies.rounds += run.fixpoint_round;
@@ -239,7 +183,7 @@ FixpointCheck check_fixpoint_family(const FixpointLemma &lemma,
   run_on_threads(options.threads, work);
 
   Tallies all(lemma);
-  for (Tallies &t : per_setting)
+  for (Tallies& t : per_setting)
     all.add(t);
 
   FixpointCheck check;
@@ -248,60 +192,43 @@ FixpointCheck check_fixpoint_family(const FixpointLemma &lemma,
   check.skipped = all.skipped;
   check.rounds = all.rounds;
 
-  const std::vector<std::string> violated = start_result(
-      check, lemma, std::chrono::duration<double>(Clock::now() - start).count(),
-      options.threads);
-  checker::PropertyResult &r = check.result;
+  const ClaimVerdicts verdicts = start_result(
+      check, lemma, std::chrono::duration<double>(Clock::now() - start).count(), options.threads);
+  const std::vector<std::string>& violated = verdicts.violated;
+  checker::PropertyResult& r = check.result;
   const std::string scope = std::to_string(check.instances) +
                             " runs to the fixed point (default "
                             "order), " +
                             std::to_string(check.rounds) + " rounds";
   if (!violated.empty()) {
     r.verdict = checker::Verdict::violated;
-    r.message =
-        "violated: " + join(violated) + " (smallest counterexample: " +
-        std::to_string(check.counterexample->robots()) +
-        " robots, m = " + std::to_string(check.counterexample->setting.m) +
-        ", claim " + check.counterexample->claim + "); " + scope;
+    r.message = "violated: " + join(violated) +
+                " (smallest counterexample: " + std::to_string(check.counterexample->robots()) +
+                " robots, m = " + std::to_string(check.counterexample->setting.m) + ", claim " +
+                check.counterexample->claim + "); " + scope;
   } else {
     r.verdict = checker::Verdict::holds;
-    r.message = "holds: every claim that decides the verdict, on every run of "
-                "the family; " +
-                scope;
+    r.message = "holds: every claim that decides the verdict, on every run of the family; " + scope;
   }
-  std::vector<std::string> steps;
-  for (const BoundTally &c : check.claims)
-    if (!c.claim.decides_verdict && c.violations > 0)
-      steps.push_back(c.claim.id);
-  if (!steps.empty())
-    r.message +=
-        "; reported beside them, not deciding: " + join(steps) + " fails";
-  r.figures.emplace_back(
-      "covered",
-      describe(family) + "; " + std::to_string(check.instances) +
-          " instances run to the fixed point in the default order, " +
-          std::to_string(check.skipped) + " symmetric duplicates skipped");
+  if (!verdicts.reported.empty())
+    r.message += "; reported beside them, not deciding: " + join(verdicts.reported) + " fails";
+  r.figures.emplace_back("covered", describe(family) + "; " + std::to_string(check.instances) +
+                                        " instances run to the fixed point in the default order, " +
+                                        std::to_string(check.skipped) +
+                                        " symmetric duplicates skipped");
   r.figures.emplace_back("settings", std::to_string(n));
   r.figures.emplace_back("curves merged (equal up to symmetry)",
-                         list.merged.empty() ? "none"
-                                             : join(list.merged, "; "));
+                         list.merged.empty() ? "none" : join(list.merged, "; "));
   r.figures.emplace_back("instances checked", std::to_string(check.instances));
   r.figures.emplace_back("rounds run", std::to_string(check.rounds));
   report_claims(check);
   return check;
 }
 
-std::vector<std::string> start_result(FixpointCheck &check,
-                                      const FixpointLemma &lemma,
-                                      double seconds, unsigned threads) {
-  std::vector<std::string> violated;
-  for (const BoundTally &c : check.claims)
-    if (c.claim.decides_verdict && c.smallest) {
-      violated.push_back(c.claim.id);
-      if (!check.counterexample || smaller(*c.smallest, *check.counterexample))
-        check.counterexample = c.smallest;
-    }
-  checker::PropertyResult &r = check.result;
+ClaimVerdicts start_result(FixpointCheck& check, const FixpointLemma& lemma, double seconds,
+                           unsigned threads) {
+  const ClaimVerdicts verdicts = check.sort_claims();
+  checker::PropertyResult& r = check.result;
   r.name = lemma.name;
   r.kind = "round-lemma";
   r.description = lemma.description;
@@ -311,29 +238,16 @@ std::vector<std::string> start_result(FixpointCheck &check,
   r.seconds = seconds;
   r.threads = std::max(1u, threads);
   r.time_unit = "rounds";
-  return violated;
+  return verdicts;
 }
 
-void report_claims(FixpointCheck &check) {
-  checker::PropertyResult &r = check.result;
-  for (const BoundTally &c : check.claims)
-    r.figures.emplace_back(
-        (c.claim.decides_verdict ? "claim " : "proof step ") + c.claim.id,
-        c.summary());
-  for (const BoundTally &c : check.claims)
-    r.notes.push_back((c.claim.decides_verdict ? "claim " : "proof step ") +
-                      c.claim.id + ": " + c.claim.statement + " [" +
-                      c.claim.source + "]");
-  for (const BoundTally &c : check.claims) {
-    const std::optional<BoundWitness> &shown =
-        c.smallest ? c.smallest : c.largest;
-    if (shown)
-      for (std::string &line : shown->lines())
-        r.notes.push_back(std::move(line));
-  }
+void report_claims(FixpointCheck& check) {
+  check.figure_claims("proof step ");
+  check.note_statements("proof step ");
+  check.note_witnesses(true);
   if (check.counterexample) {
-    r.trace_role = "counterexample";
-    r.trace_kind = "round";
+    check.result.trace_role = "counterexample";
+    check.result.trace_kind = "round";
   }
 }
 
