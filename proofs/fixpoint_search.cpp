@@ -47,38 +47,6 @@ Counts population(SplitMix64& random, std::size_t regions, RobotCount max_count)
   return counts;
 }
 
-// Fewer robots, then the smaller grid; ties keep the first sample.
-bool smaller(const BoundWitness& a, const BoundWitness& b) {
-  if (a.robots() != b.robots())
-    return a.robots() < b.robots();
-  return a.setting.m < b.setting.m;
-}
-
-// Is a closer to its bound than b (a larger value/bound, exactly)? A violation is closest;
-// between two violations the first stays. Measurements with a bound <= 0 that hold are
-// not compared (never recorded as the closest).
-bool closer(const Measurement& a, const Measurement& b) {
-  const bool a_over = a.value > a.bound, b_over = b.value > b.bound;
-  if (a_over || b_over)
-    return a_over && !b_over;
-  return a.value * b.bound > b.value * a.bound;
-}
-
-void record(BoundTally& tally, BoundWitness&& witness) {
-  ++tally.premise;
-  const Measurement& m = witness.measurement;
-  const bool violated = witness.violated();
-  if (!tally.largest || m.value > tally.largest->measurement.value)
-    tally.largest = witness;
-  if ((m.bound > 0 || violated) && (!tally.tightest || closer(m, tally.tightest->measurement)))
-    tally.tightest = witness;
-  if (violated) {
-    ++tally.violations;
-    if (!tally.smallest || smaller(witness, *tally.smallest))
-      tally.smallest = std::move(witness);
-  }
-}
-
 // One sample run to its fixed point: every claim's measurement as a witness (nullopt: the
 // premise is not met), or no fixed point within max_rounds.
 struct SampleRun {
@@ -190,11 +158,8 @@ FixpointCheck search_fixpoint(const FixpointLemma& lemma, const FixpointSearchOp
   const std::vector<FixpointSample> samples = fixpoint_samples(options);
 
   std::vector<BoundTally> tallies;
-  for (const BoundClaim& c : lemma.claims) {
-    BoundTally tally;
-    tally.claim = c;
-    tallies.push_back(std::move(tally));
-  }
+  for (const BoundClaim& c : lemma.claims)
+    tallies.push_back({.claim = c});
   std::uint64_t rounds = 0, no_fixpoint = 0;
   // In blocks, so that the runs kept for merging stay few: each block's samples are split
   // between threads, then merged in sample order.
@@ -213,8 +178,9 @@ FixpointCheck search_fixpoint(const FixpointLemma& lemma, const FixpointSearchOp
       rounds += run.rounds;
       no_fixpoint += run.no_fixpoint ? 1 : 0;
       for (std::size_t c = 0; c < tallies.size(); ++c)
-        if (run.witnesses[c])
-          record(tallies[c], std::move(*run.witnesses[c]));
+        if (const auto& witness = run.witnesses[c])
+          tallies[c].record_measurement(
+              witness->measurement, [&] { return *witness; }, closer_to_bound_first_violation);
     }
   }
   std::vector<std::string> found;
@@ -230,12 +196,10 @@ FixpointCheck search_fixpoint(const FixpointLemma& lemma, const FixpointSearchOp
   check.claims = std::move(tallies);
   check.instances = samples.size();
   check.rounds = rounds;
-  const std::vector<std::string> violated = start_result(
+  const ClaimVerdicts verdicts = start_result(
       check, lemma, std::chrono::duration<double>(Clock::now() - began).count(), options.threads);
-  std::vector<std::string> steps;
-  for (const BoundTally& c : check.claims)
-    if (c.smallest && !c.claim.decides_verdict)
-      steps.push_back(c.claim.id);
+  const auto& violated = verdicts.violated;
+  const auto& steps = verdicts.reported;
   checker::PropertyResult& r = check.result;
   const std::string scope = std::to_string(check.rounds) + " rounds to the fixed point";
   if (!violated.empty()) {

@@ -1,6 +1,6 @@
 #pragma once
 // A seeded random search for the lemmas about runs to the fixed point (6.5, 6.6, 6.7 and
-// every FixpointLemma, proofs/lemma_6_5.hpp), beside their exhaustive check over a small
+// every FixpointLemma, proofs/fixpoint_lemma.hpp), beside their exhaustive check over a small
 // Family: random populations of hundreds of robots per region on grids up to 4×4, each run
 // to its fixed point with RoundSystem::run_to_fixpoint (the default order) and measured
 // with the lemma's `evaluate`. A violated claim is shrunk (a smaller grid, fewer robots,
@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "proofs/lemma_6_5.hpp"
+#include "proofs/fixpoint_lemma.hpp"
 
 namespace proofs {
 

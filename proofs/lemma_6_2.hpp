@@ -6,7 +6,7 @@
 //   "LEMMA 6.2. There exists a round t1 ≥ t0 such that for every round t ∈ [t1, t1 +
 //    (1 + ρ3)m²n²]: (1) In(t) = In(t1); (2) Out(t) = Out(t1); (3) Cin(t) ⊆ Cin(t + 1); and
 //    (4) Cout(t+1) ⊆ Cout(t). Round t1 occurs no later than time t0 + 2m²·(1+ρ3)m²n²."
-// with ρ3 = q²max/((1 − ρ2)σ) (line 1015), n the number of robots. As in lemma_6_5.hpp, ρ3
+// with ρ3 = q²max/((1 − ρ2)σ) (line 1015), n the number of robots. As in fixpoint_lemma.hpp, ρ3
 // is taken with σ as the unit of length and t0 = 0.
 //
 // The measured t1 is the least round that satisfies the statement: every round t of the
@@ -22,7 +22,7 @@
 
 #include <cstddef>
 
-#include "proofs/lemma_6_5.hpp"
+#include "proofs/fixpoint_lemma.hpp"
 
 namespace proofs {
 

@@ -12,7 +12,7 @@
 // The measured t2 is the least round ≥ t1 such that in no round of [t2, t2 + (1 + ρ3)m²n]
 // does a region of Out(t) assign robots to a neighbour in In(t) (a neighbour with robots on
 // the curve; assign sends only to neighbours). It always exists: after the fixed point F
-// nothing moves. Units and t0 = 0 as in lemma_6_5.hpp.
+// nothing moves. Units and t0 = 0 as in fixpoint_lemma.hpp.
 
 #include <cstddef>
 

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "proofs/lemma_6_5.hpp"
+
 namespace proofs {
 
 namespace {

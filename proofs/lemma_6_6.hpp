@@ -31,7 +31,7 @@
 // e ≤ 4 + e" on every boundary region at T_out is reported beside the claim (claim "L5
 // step", not deciding the verdict): measured, not assumed.
 
-#include "proofs/lemma_6_5.hpp"
+#include "proofs/fixpoint_lemma.hpp"
 
 namespace proofs {
 

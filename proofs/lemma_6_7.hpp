@@ -22,7 +22,7 @@
 // proof ("6.7 step", reported, not deciding) is measured on every pair of neighbouring In
 // regions, not assumed.
 
-#include "proofs/lemma_6_5.hpp"
+#include "proofs/fixpoint_lemma.hpp"
 
 namespace proofs {
 

@@ -60,12 +60,7 @@ enum ClaimId {
 
 Lemma68Tally make_claim(std::string id, std::string statement, std::string source,
                         bool decides_verdict = true) {
-  Lemma68Tally tally;
-  tally.id = std::move(id);
-  tally.statement = std::move(statement);
-  tally.source = std::move(source);
-  tally.decides_verdict = decides_verdict;
-  return tally;
+  return {.claim = {std::move(id), std::move(statement), std::move(source), decides_verdict}};
 }
 
 // A failing matrix claim: n interior robots (n + 2 with the ends) and ρ1.
@@ -131,8 +126,7 @@ std::vector<Lemma68Tally> fresh_claims() {
 // Keeps the counterexample with fewer robots; ties keep the first.
 void record(Lemma68Tally& tally, Lemma68Counterexample example) {
   ++tally.violations;
-  if (!tally.smallest || example.robots < tally.smallest->robots)
-    tally.smallest = std::move(example);
+  tally.keep_smallest(std::move(example));
 }
 
 // T·x for the intended T, exactly.
@@ -237,9 +231,9 @@ void check_matrices(const Lemma68Family& family, const Rational& rho1, Partial& 
   for (std::size_t n = 1; n <= big; ++n) {
     ++out.matrices;
     Lemma68Tally& radius = out.claims[matrix_radius];
-    ++radius.checked;
+    ++radius.premise;
     if (n > certified)
-      record(radius, matrix_example(radius.id, n, rho1,
+      record(radius, matrix_example(radius.claim.id, n, rho1,
                                     "an LDL^T pivot of I - T or I + T is <= 0 at size " +
                                         std::to_string(certified + 1) +
                                         ", so rho(T) >= 1 for n = " + std::to_string(n)));
@@ -254,9 +248,9 @@ void check_matrices(const Lemma68Family& family, const Rational& rho1, Partial& 
       disagreement = std::max(disagreement, std::abs(eigen[j] - closed[j]));
     out.largest_disagreement = std::max(out.largest_disagreement, disagreement);
     Lemma68Tally& cross = out.claims[matrix_cross_check];
-    ++cross.checked;
+    ++cross.premise;
     if (!(disagreement <= 1e-12))
-      record(cross, matrix_example(cross.id, n, rho1,
+      record(cross, matrix_example(cross.claim.id, n, rho1,
                                    "largest |Eigen - closed form| = " + number(disagreement)));
     const double rho = spectral_radius(eigen);
     if (rho > out.largest_radius) {
@@ -282,10 +276,10 @@ void check_matrices(const Lemma68Family& family, const Rational& rho1, Partial& 
     if (n < 2)
       continue;
     Lemma68Tally& symmetric = out.claims[printed_symmetric];
-    ++symmetric.checked;
+    ++symmetric.premise;
     if (rho1 / 2 != 1 - rho1)
       record(symmetric,
-             matrix_example(symmetric.id, n, rho1,
+             matrix_example(symmetric.claim.id, n, rho1,
                             "entry (" + std::to_string(n - 1) + ", " + std::to_string(n) +
                                 ") = rho1/2 = " + mc::to_string(rho1 / 2) + " but entry (" +
                                 std::to_string(n) + ", " + std::to_string(n - 1) +
@@ -319,7 +313,7 @@ void check_matrices(const Lemma68Family& family, const Rational& rho1, Partial& 
       out.printed_norm_rho1 = rho1;
     }
     Lemma68Tally& contracts = out.claims[printed_contracts];
-    ++contracts.checked;
+    ++contracts.premise;
     Vector witness(n);
     for (std::size_t i = 0; i < n; ++i)
       witness[i] = Rational(gram.eigenvectors()(static_cast<Eigen::Index>(i), top));
@@ -328,7 +322,7 @@ void check_matrices(const Lemma68Family& family, const Rational& rho1, Partial& 
     if (after > before)
       record(
           contracts,
-          matrix_example(contracts.id, n, rho1,
+          matrix_example(contracts.claim.id, n, rho1,
                          "||T x||^2 / ||x||^2 = " + number((after / before).convert_to<double>()) +
                              " > 1 (exactly) for x the top singular vector; ||T_printed||_2 = " +
                              number(norm)));
@@ -453,21 +447,21 @@ void check_dynamics(const Lemma68Family& family, const DynamicsItem& item, std::
       auto fail = [&](ClaimId id, auto why) {
         Lemma68Tally& tally = out.claims[id];
         ++tally.violations;
-        if (tally.smallest && tally.smallest->robots <= robots)
-          return;
-        Lemma68Counterexample example;
-        example.claim = tally.id;
-        example.robots = robots;
-        example.rho1 = rho1;
-        example.length = length;
-        example.start = start;
-        example.round = k;
-        example.before = p;
-        example.after = next;
-        example.why = why();
-        tally.smallest = std::move(example);
+        tally.keep_smallest(robots, [&] {
+          Lemma68Counterexample example;
+          example.claim = tally.claim.id;
+          example.robots = robots;
+          example.rho1 = rho1;
+          example.length = length;
+          example.start = start;
+          example.round = k;
+          example.before = p;
+          example.after = next;
+          example.why = why();
+          return example;
+        });
       };
-      ++out.claims[order].checked;
+      ++out.claims[order].premise;
       for (std::size_t i = 0; i + 1 < robots; ++i)
         if (less(next[i + 1], next[i])) {
           fail(order, [&] {
@@ -476,7 +470,7 @@ void check_dynamics(const Lemma68Family& family, const DynamicsItem& item, std::
           });
           break;
         }
-      ++out.claims[ends].checked;
+      ++out.claims[ends].premise;
       if (next.front() != 0 || (robots >= 2 && next.back() != length))
         fail(ends, [&] {
           return "the ends are at " + mc::to_string(next.front()) + " and " +
@@ -505,7 +499,7 @@ void check_dynamics(const Lemma68Family& family, const DynamicsItem& item, std::
           return sum;
         };
         const mc::BigInteger left_scale = two_b * e.scale;
-        ++out.claims[linear_model].checked;
+        ++out.claims[linear_model].premise;
         for (std::size_t i = 0; i < interior; ++i)
           if (e_next.values[i] * left_scale != model(i) * e_next.scale) {
             fail(linear_model, [&] {
@@ -517,7 +511,7 @@ void check_dynamics(const Lemma68Family& family, const DynamicsItem& item, std::
           }
         // The printed T differs from the intended one in its last row only:
         // (1 − ρ1)e_{n−1} + ρ1/2·e_n = (2(b − a)E_{n−1} + aE_n)/(2bQ).
-        ++out.claims[printed_dynamics].checked;
+        ++out.claims[printed_dynamics].premise;
         if (interior >= 2 &&
             e_next.values[interior - 1] * left_scale !=
                 (diagonal * e.values[interior - 2] + a * e.values[interior - 1]) * e_next.scale)
@@ -528,7 +522,7 @@ void check_dynamics(const Lemma68Family& family, const DynamicsItem& item, std::
           });
         if (norm != 0) {
           // ‖e'‖² < ‖e‖² ⟺ N'·Q² < N·Q'².
-          ++out.claims[contraction].checked;
+          ++out.claims[contraction].premise;
           const mc::BigInteger after = norm_next * e.scale * e.scale,
                                before = norm * e_next.scale * e_next.scale;
           if (!(after < before))
@@ -540,7 +534,7 @@ void check_dynamics(const Lemma68Family& family, const DynamicsItem& item, std::
           const double ratio = std::sqrt(after.convert_to<double>() / before.convert_to<double>());
           out.ratio = std::max(out.ratio, ratio);
           out.ratio_over_rho = std::max(out.ratio_over_rho, ratio / rho);
-          ++out.claims[contraction_ratio].checked;
+          ++out.claims[contraction_ratio].premise;
           if (!(ratio <= rho * (1 + 1e-12)))
             fail(contraction_ratio, [&] {
               return "||e(k+1)|| / ||e(k)|| = " + number(ratio, "%.15g") +
@@ -564,14 +558,8 @@ void check_dynamics(const Lemma68Family& family, const DynamicsItem& item, std::
 }
 
 void merge(Partial& into, Partial&& part) {
-  for (std::size_t c = 0; c < claim_count; ++c) {
-    Lemma68Tally& tally = into.claims[c];
-    Lemma68Tally& other = part.claims[c];
-    tally.checked += other.checked;
-    tally.violations += other.violations;
-    if (other.smallest && (!tally.smallest || other.smallest->robots < tally.smallest->robots))
-      tally.smallest = std::move(other.smallest);
-  }
+  for (std::size_t c = 0; c < claim_count; ++c)
+    into.claims[c].merge(std::move(part.claims[c]));
 }
 
 } // namespace
@@ -611,27 +599,16 @@ std::vector<std::string> Lemma68Counterexample::lines() const {
   return out;
 }
 
-checker::Verdict Lemma68Tally::verdict() const {
-  return violations > 0 ? checker::Verdict::violated : checker::Verdict::holds;
-}
-
-std::string Lemma68Tally::summary() const {
+template <> std::string Tally<Lemma68Counterexample>::summary() const {
   if (violations == 0)
-    return "holds (checked " + count(checked) + " times)";
-  std::string out = "violated in " + count(violations) + " of " + count(checked);
+    return "holds (checked " + count(premise) + " times)";
+  std::string out = "violated in " + count(violations) + " of " + count(premise);
   if (smallest)
     out += "; smallest counterexample " +
            (smallest->length ? std::to_string(smallest->robots) + " robots"
                              : "n = " + std::to_string(smallest->robots - 2)) +
            ", rho1 = " + mc::to_string(smallest->rho1);
   return out;
-}
-
-const Lemma68Tally& Lemma68Check::claim(std::string_view id) const {
-  for (const Lemma68Tally& tally : claims)
-    if (tally.id == id)
-      return tally;
-  throw std::out_of_range("lemma 6.8: no claim " + std::string(id));
 }
 
 std::vector<std::vector<Rational>> intended_t(std::size_t n, const Rational& rho1) {
@@ -781,15 +758,9 @@ Lemma68Check check_lemma_6_8(const Lemma68Family& family, const CheckOptions& op
   check.largest_final_error = total.final_error;
   check.largest_ratio = total.ratio;
   check.largest_ratio_over_rho = total.ratio_over_rho;
-  std::vector<std::string> violated, reported;
-  for (const Lemma68Tally& tally : check.claims) {
-    if (tally.violations == 0)
-      continue;
-    (tally.decides_verdict ? violated : reported).push_back(tally.id);
-    if (tally.decides_verdict &&
-        (!check.counterexample || tally.smallest->robots < check.counterexample->robots))
-      check.counterexample = tally.smallest;
-  }
+  const ClaimVerdicts verdicts = check.sort_claims();
+  const auto& violated = verdicts.violated;
+  const auto& reported = verdicts.reported;
 
   checker::PropertyResult& r = check.result;
   r.name = "lemma-6.8";
@@ -858,16 +829,9 @@ Lemma68Check check_lemma_6_8(const Lemma68Family& family, const CheckOptions& op
                       " starts exactly even; ||e|| grew in "
                       "round 0 -> 1 (ends not yet set) from " +
                       count(check.first_round_growth) + " starts");
-  for (const Lemma68Tally& tally : check.claims)
-    r.figures.emplace_back((tally.decides_verdict ? "claim " : "reported ") + tally.id,
-                           tally.summary());
-  for (const Lemma68Tally& tally : check.claims)
-    r.notes.push_back((tally.decides_verdict ? "claim " : "reported ") + tally.id + ": " +
-                      tally.statement + " [" + tally.source + "]");
-  for (const Lemma68Tally& tally : check.claims)
-    if (tally.smallest)
-      for (std::string& line : tally.smallest->lines())
-        r.notes.push_back(std::move(line));
+  check.figure_claims("reported ");
+  check.note_statements("reported ");
+  check.note_witnesses();
   r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return check;
 }

@@ -39,6 +39,7 @@
 
 #include "checker/result.hpp"
 #include "models/mc/rational.hpp"
+#include "proofs/claim_tally.hpp"
 #include "proofs/round_lemma.hpp"
 
 namespace proofs {
@@ -84,21 +85,17 @@ struct Lemma68Counterexample {
   std::vector<mc::Rational> before, after; // dynamics: parameters at k and k+1
   std::string why;
 
+  // Fewest robots.
+  std::size_t order_key() const { return robots; }
   std::vector<std::string> lines() const;
 };
 
-struct Lemma68Tally {
-  std::string id;
-  std::string statement;
-  std::string source;
-  bool decides_verdict = true; // false: the printed matrix, a numerical cross-check
-  std::uint64_t checked = 0;
-  std::uint64_t violations = 0;
-  std::optional<Lemma68Counterexample> smallest; // fewest robots, then enumeration order
-
-  checker::Verdict verdict() const;
-  std::string summary() const;
-};
+// A claim of Lemma 6.8 over the check: `premise` how often it was checked, `violations` how
+// often it failed, the smallest counterexample. A claim that does not decide the verdict is a
+// typo of the printed matrix or a numerical cross-check.
+using Lemma68Tally = Tally<Lemma68Counterexample>;
+// "holds (checked 123 times)", "violated in 4 of 123; smallest counterexample …"
+template <> std::string Tally<Lemma68Counterexample>::summary() const;
 
 // ρ(T) for the largest n beside the rounds it takes to shrink the error by 10^-6.
 struct SlowestRate {
@@ -110,10 +107,7 @@ struct SlowestRate {
   std::uint64_t rounds_to_1e6 = 0; // 0: never (ρ(T) ≥ 1)
 };
 
-struct Lemma68Check {
-  checker::PropertyResult result;
-  std::vector<Lemma68Tally> claims;
-
+struct Lemma68Check : Check<Lemma68Counterexample> {
   // The matrix T.
   std::uint64_t matrices = 0;         // (n, ρ1) pairs
   double largest_spectral_radius = 0; // Eigen
@@ -143,10 +137,7 @@ struct Lemma68Check {
   double largest_ratio = 0;             // max ‖e(k+1)‖/‖e(k)‖, k ≥ 1 (doubles)
   double largest_ratio_over_rho = 0;    // max of that ratio / ρ(T_n)
 
-  std::optional<Lemma68Counterexample> counterexample; // smallest over deciding claims
-
-  // Throws std::out_of_range for an unknown id.
-  const Lemma68Tally& claim(std::string_view id) const;
+  // `counterexample`: the smallest over the claims deciding the verdict.
 };
 
 // The symmetric T (intended) and the printed one (line 316), n×n, exactly.

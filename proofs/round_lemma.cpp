@@ -19,16 +19,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Orders counterexamples: fewest robots, then the smaller grid; ties keep the first found.
-bool smaller(const RoundCounterexample& a, const RoundCounterexample& b) {
-  return std::tuple(a.robots(), a.setting.m) < std::tuple(b.robots(), b.setting.m);
-}
-
-void keep_smallest(std::optional<RoundCounterexample>& best, RoundCounterexample candidate) {
-  if (!best || smaller(candidate, *best))
-    best = std::move(candidate);
-}
-
 // The outcomes of one round: all_flows when there are at most `limit`, else the default
 // order and `sampled` random combinations of the per-region outcomes (sorted, distinct).
 struct Outcomes {
@@ -77,27 +67,18 @@ struct Tallies {
 
   explicit Tallies(const RoundLemma& lemma) {
     for (const Claim& c : lemma.claims)
-      claims.push_back({c, 0, 0, 0, 0, 0, std::nullopt});
+      claims.push_back({.claim = c});
   }
 
-  void add(const Tallies& other) {
+  void add(Tallies&& other) {
     instances += other.instances;
     skipped += other.skipped;
     represented += other.represented;
     outcomes += other.outcomes;
     outcomes_represented += other.outcomes_represented;
     sampled += other.sampled;
-    for (std::size_t i = 0; i < claims.size(); ++i) {
-      auto& mine = claims[i];
-      const auto& theirs = other.claims[i];
-      mine.premise += theirs.premise;
-      mine.violations += theirs.violations;
-      mine.premise_represented += theirs.premise_represented;
-      mine.violations_represented += theirs.violations_represented;
-      mine.outside_window += theirs.outside_window;
-      if (theirs.smallest)
-        keep_smallest(mine.smallest, *theirs.smallest);
-    }
+    for (std::size_t i = 0; i < claims.size(); ++i)
+      claims[i].merge(std::move(other.claims[i]));
   }
 };
 
@@ -127,9 +108,9 @@ void check_instance(const RoundLemma& lemma, const Setting& setting, const mc::R
       if (!scratch[i].failure)
         continue;
       std::string why = *scratch[i].failure;
-      if (tally.claim.journal_window) {
+      if (lemma.claims[i].journal_window) {
         if (const auto outside = lemma.confirm_window(step)) {
-          ++tally.outside_window;
+          ++tally.undecided;
           continue;
         }
         why += "; the round lies in a window of the journal (t0 = t1 = t2 = t: this outcome, "
@@ -138,9 +119,9 @@ void check_instance(const RoundLemma& lemma, const Setting& setting, const mc::R
       }
       ++tally.violations;
       tally.violations_represented += orbit;
-      if (!tally.smallest || std::tuple(robots, setting.m) <
-                                 std::tuple(tally.smallest->robots(), tally.smallest->setting.m))
-        tally.smallest = RoundCounterexample{tally.claim.id, setting, counts, flow, after, why};
+      tally.keep_smallest(std::tuple(robots, setting.m), [&] {
+        return RoundCounterexample{tally.claim.id, setting, counts, flow, after, why};
+      });
     }
   }
 }
@@ -165,17 +146,9 @@ LemmaCheck finish(const RoundLemma& lemma, Tallies&& tallies, const std::string&
   check.outcomes_represented = tallies.outcomes_represented;
   check.sampled_outcome_instances = tallies.sampled;
 
-  std::vector<std::string> violated, undecided;
-  for (const ClaimTally& c : check.claims) {
-    if (!c.claim.decides_verdict)
-      continue;
-    if (c.verdict() == checker::Verdict::violated) {
-      violated.push_back(c.claim.id);
-      keep_smallest(check.counterexample, *c.smallest);
-    } else if (c.verdict() == checker::Verdict::incomplete) {
-      undecided.push_back(c.claim.id);
-    }
-  }
+  const ClaimVerdicts verdicts = check.sort_claims();
+  const auto& violated = verdicts.violated;
+  const auto& undecided = verdicts.undecided;
 
   checker::PropertyResult& r = check.result;
   r.name = lemma.name;
@@ -214,17 +187,9 @@ LemmaCheck finish(const RoundLemma& lemma, Tallies&& tallies, const std::string&
   r.figures.insert(r.figures.begin(), {"covered", covered});
   r.figures.emplace_back("instances checked", std::to_string(check.instances));
   r.figures.emplace_back("(instance, outcome) pairs", std::to_string(check.outcomes));
-  for (const ClaimTally& c : check.claims)
-    r.figures.emplace_back((c.claim.decides_verdict ? "claim " : "proof step ") + c.claim.id,
-                           c.summary());
-
-  for (const ClaimTally& c : check.claims)
-    r.notes.push_back((c.claim.decides_verdict ? "claim " : "proof step ") + c.claim.id + ": " +
-                      c.claim.statement + " [" + c.claim.source + "]");
-  for (const ClaimTally& c : check.claims)
-    if (c.smallest)
-      for (std::string& line : c.smallest->lines())
-        r.notes.push_back(std::move(line));
+  check.figure_claims("proof step ");
+  check.note_statements("proof step ");
+  check.note_witnesses();
   if (check.counterexample) {
     r.trace_role = "counterexample";
     r.trace_kind = "round";
@@ -285,37 +250,22 @@ std::vector<std::string> RoundCounterexample::lines() const {
   return out;
 }
 
-checker::Verdict ClaimTally::verdict() const {
-  if (violations > 0)
-    return checker::Verdict::violated;
-  if (outside_window > 0)
-    return checker::Verdict::incomplete;
-  return checker::Verdict::holds;
-}
-
-std::string ClaimTally::summary() const {
+template <> std::string Tally<RoundCounterexample>::summary() const {
   std::string out;
   if (violations > 0)
     out = "violated in " + std::to_string(violations) + " (instance, outcome) pairs";
-  else if (outside_window > 0)
+  else if (undecided > 0)
     out = "undecided";
   else
     out = "holds";
   out += "; premise met " + std::to_string(premise) + " times";
-  if (outside_window > 0)
-    out += "; fails on " + std::to_string(outside_window) +
+  if (undecided > 0)
+    out += "; fails on " + std::to_string(undecided) +
            " rounds not shown to lie in the journal's window";
   if (smallest)
     out += "; smallest counterexample " + std::to_string(smallest->robots()) +
            " robots, m = " + std::to_string(smallest->setting.m);
   return out;
-}
-
-const ClaimTally& LemmaCheck::claim(std::string_view id) const {
-  for (const ClaimTally& c : claims)
-    if (c.claim.id == id)
-      return c;
-  throw std::out_of_range("no claim " + std::string(id));
 }
 
 // ---- The exhaustive check
@@ -354,7 +304,7 @@ LemmaCheck check_family(const RoundLemma& lemma, const Family& family,
   Tallies all(lemma);
   std::uint64_t too_many = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    all.add(per_setting[i]);
+    all.add(std::move(per_setting[i]));
     too_many += incomplete[i];
   }
   std::vector<std::pair<std::string, std::string>> figures{
@@ -572,7 +522,6 @@ LemmaCheck search_random(const RoundLemma& lemma, const SearchOptions& options) 
   std::vector<std::string> curves = curve_names();
   curves.push_back("random");
   std::vector<ClaimOutcome> scratch;
-  std::vector<std::optional<RoundCounterexample>> found(lemma.claims.size());
 
   for (std::uint64_t sample = 0; sample < options.samples; ++sample) {
     Setting setting;
@@ -625,22 +574,13 @@ LemmaCheck search_random(const RoundLemma& lemma, const SearchOptions& options) 
     const Outcomes outcomes =
         round_outcomes(system, counts, options.outcome_limit, options.sampled_outcomes, random);
     tallies.sampled += outcomes.sampled ? 1 : 0;
-    Tallies one(lemma);
-    check_instance(lemma, setting, system, counts, 1, outcomes.flows, one, scratch);
-    // The smallest counterexample of each claim so far: the one to shrink.
-    for (std::size_t i = 0; i < found.size(); ++i)
-      if (one.claims[i].smallest)
-        keep_smallest(found[i], *one.claims[i].smallest);
-    for (auto& c : one.claims)
-      c.smallest.reset();
-    tallies.add(one);
+    check_instance(lemma, setting, system, counts, 1, outcomes.flows, tallies, scratch);
   }
-  for (std::size_t i = 0; i < found.size(); ++i)
-    if (found[i])
+  // The smallest counterexample of each claim the search found, shrunk.
+  for (std::size_t i = 0; i < tallies.claims.size(); ++i)
+    if (const auto& found = tallies.claims[i].smallest; found && options.shrink)
       tallies.claims[i].smallest =
-          options.shrink
-              ? shrink(lemma, i, *found[i], options.outcome_limit, options.sampled_outcomes)
-              : *found[i];
+          shrink(lemma, i, *found, options.outcome_limit, options.sampled_outcomes);
 
   std::vector<std::string> ks, rho2s;
   for (auto k : options.ks)

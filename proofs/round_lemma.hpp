@@ -25,10 +25,12 @@
 #include <string>
 #include <string_view>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "checker/result.hpp"
 #include "models/mc/round.hpp"
+#include "proofs/claim_tally.hpp"
 #include "proofs/family.hpp"
 
 namespace proofs {
@@ -41,11 +43,9 @@ struct RoundStep {
   const Counts& after;  // M_{t+1} = flow.apply(M_t)
 };
 
-struct Claim {
-  std::string id;              // "6.1(1)", "L2(2)", "L2(2) step: ..."
-  std::string statement;       // one line
-  std::string source;          // "seed 000 line 1044; seed 002 line 246"
-  bool decides_verdict = true; // false: a step of the paper's proof, reported only
+// A claim of a one-step lemma: id ("6.1(1)", "L2(2)", "L2(2) step: ..."), statement, source
+// ("seed 000 line 1044; seed 002 line 246"), whether it decides the verdict.
+struct Claim : ClaimStatement {
   // Only rounds inside the journal's window t ∈ [t2, …] (seed 000 Lemmas 6.2, 6.3): a
   // failure counts when RoundLemma::confirm_window places the round in such a window.
   bool journal_window = false;
@@ -78,30 +78,21 @@ struct RoundCounterexample {
   std::string why;
 
   RobotCount robots() const { return mc::total(before); }
+  // Fewest robots, then the smaller grid.
+  std::tuple<RobotCount, int> order_key() const { return {robots(), setting.m}; }
   // The instance, the counts at t, the flow, the counts at t+1 and why the claim fails.
   std::vector<std::string> lines() const;
 };
 
-struct ClaimTally {
-  Claim claim;
-  std::uint64_t premise = 0;    // premise met, over the instances checked
-  std::uint64_t violations = 0; // (instance, outcome) pairs where it fails
-  // Weighted by each instance's orbit size: the same figures for the unreduced family.
-  std::uint64_t premise_represented = 0;
-  std::uint64_t violations_represented = 0;
-  // journal_window claims: failures on rounds not shown to lie in a window (not violations).
-  std::uint64_t outside_window = 0;
-  std::optional<RoundCounterexample> smallest;
+// A claim of a one-step lemma over a check: premise met, violations (instance, outcome pairs),
+// both weighted by orbit size too, `undecided` the failures of a journal_window claim on
+// rounds not shown to lie in a window (not violations), the smallest counterexample.
+// verdict(): violated, else incomplete when undecided, else holds.
+using ClaimTally = Tally<RoundCounterexample>;
+// "holds; premise met 123 times", "violated in 4 (instance, outcome) pairs; …"
+template <> std::string Tally<RoundCounterexample>::summary() const;
 
-  // violated when a violation was found; incomplete when the only failures lie outside a
-  // known window; holds otherwise.
-  checker::Verdict verdict() const;
-  std::string summary() const; // "holds (premise met 123 times)", "violated in 4 of …"
-};
-
-struct LemmaCheck {
-  checker::PropertyResult result;
-  std::vector<ClaimTally> claims;
+struct LemmaCheck : Check<RoundCounterexample> {
   std::uint64_t instances = 0;            // instances checked
   std::uint64_t skipped = 0;              // symmetric duplicates skipped
   std::uint64_t represented = 0;          // configurations of the unreduced family
@@ -109,11 +100,7 @@ struct LemmaCheck {
   std::uint64_t outcomes_represented = 0; // weighted by orbit size
   std::uint64_t sampled_outcome_instances =
       0; // random search: instances whose outcomes were sampled
-  // The smallest counterexample over the claims that decide the verdict.
-  std::optional<RoundCounterexample> counterexample;
-
-  // Throws std::out_of_range for an unknown id.
-  const ClaimTally& claim(std::string_view id) const;
+  // `counterexample`: the smallest over the claims that decide the verdict.
 };
 
 // Runs `work` on `threads` threads (this one included) and waits for all of them; the

@@ -332,10 +332,6 @@ struct Tallies {
   std::uint64_t runs = 0, rounds = 0;
 };
 
-bool fewer(const PositionalWitness& a, const PositionalWitness& b) {
-  return a.robots != b.robots ? a.robots < b.robots : a.m < b.m;
-}
-
 // Adds one run's outcome to the tallies of its reading.
 void record(Tallies& tallies, std::size_t reading, const PositionSetting& setting,
             std::size_t setting_index, const std::vector<mc::Robot>& robots,
@@ -347,20 +343,18 @@ void record(Tallies& tallies, std::size_t reading, const PositionSetting& settin
     if (!verdict)
       continue;
     PositionalTally& tally = tallies.claims[reading * kinds + kind];
-    PositionalWitness w{tally.claim,  setting.describe(), robots.size(), setting.m,
-                        verdict->why, outcome.lines,      setting_index, robots};
+    PositionalWitness w{tally.claim.id, setting.describe(), robots.size(), setting.m,
+                        verdict->why,   outcome.lines,      setting_index, robots};
     if (!verdict->decided) {
       ++tally.undecided;
-      if (!tally.undecided_example || fewer(w, *tally.undecided_example))
-        tally.undecided_example = std::move(w);
+      tally.keep_undecided(std::move(w));
       continue;
     }
     ++tally.premise;
     if (!verdict->violated)
       continue;
     ++tally.violations;
-    if (!tally.smallest || fewer(w, *tally.smallest))
-      tally.smallest = std::move(w);
+    tally.keep_smallest(std::move(w));
   }
 }
 
@@ -419,7 +413,7 @@ std::string PositionalFamily::describe() const {
          std::to_string(spacing_rounds) + " rounds after T + 2; default order, lowest ids";
 }
 
-std::string PositionalTally::summary() const {
+template <> std::string Tally<PositionalWitness>::summary() const {
   std::string out = violations > 0  ? "violated on " + std::to_string(violations) + " runs"
                     : undecided > 0 ? "undecided on " + std::to_string(undecided) + " runs"
                                     : "holds on " + std::to_string(premise) + " runs";
@@ -429,13 +423,6 @@ std::string PositionalTally::summary() const {
     out += "; smallest counterexample " + std::to_string(smallest->robots) +
            " robots: " + smallest->setting + "; " + smallest->why;
   return out;
-}
-
-const PositionalTally& TheoremCheck::claim(std::string_view id) const {
-  for (const PositionalTally& c : claims)
-    if (c.claim == id)
-      return c;
-  throw std::out_of_range("no claim " + std::string(id));
 }
 
 TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamily& positions,
@@ -466,7 +453,7 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
     Tallies t;
     for (mc::Membership membership : positions.memberships)
       for (int kind = 0; kind < kinds; ++kind)
-        t.claims.push_back({claim_id(static_cast<ClaimKind>(kind), membership), 0, 0, 0, {}, {}});
+        t.claims.push_back({.claim = {claim_id(static_cast<ClaimKind>(kind), membership), {}, {}}});
     return t;
   };
   // The random search: samples drawn in order before anything runs (the same for every
@@ -541,18 +528,8 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
   for (Tallies& t : per_setting) {
     all.runs += t.runs;
     all.rounds += t.rounds;
-    for (std::size_t c = 0; c < all.claims.size(); ++c) {
-      PositionalTally& mine = all.claims[c];
-      PositionalTally& theirs = t.claims[c];
-      mine.premise += theirs.premise;
-      mine.violations += theirs.violations;
-      mine.undecided += theirs.undecided;
-      if (theirs.smallest && (!mine.smallest || fewer(*theirs.smallest, *mine.smallest)))
-        mine.smallest = std::move(theirs.smallest);
-      if (theirs.undecided_example &&
-          (!mine.undecided_example || fewer(*theirs.undecided_example, *mine.undecided_example)))
-        mine.undecided_example = std::move(theirs.undecided_example);
-    }
+    for (std::size_t c = 0; c < all.claims.size(); ++c)
+      all.claims[c].merge(std::move(t.claims[c]));
   }
   // Shrink the random search's smallest counterexamples: drop robots while the claim fails.
   if (positions.samples > 0)
@@ -563,7 +540,7 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
       const mc::PositionSystem system = system_of(setting);
       const auto kind = static_cast<std::size_t>(
           std::find_if(kind_names, kind_names + kinds,
-                       [&](const char* k) { return tally.claim.find(k) != std::string::npos; }) -
+                       [&](const char* k) { return tally.claim.id.find(k) != std::string::npos; }) -
           kind_names);
       std::vector<mc::Robot> robots = tally.smallest->start;
       for (bool dropped = true; dropped;) {
@@ -599,13 +576,9 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
   r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   r.threads = std::max(1u, options.threads);
   r.time_unit = "rounds";
-  std::vector<std::string> violated, undecided;
-  for (const PositionalTally& c : check.claims) {
-    if (c.violations > 0)
-      violated.push_back(c.claim);
-    else if (c.undecided > 0)
-      undecided.push_back(c.claim);
-  }
+  ClaimVerdicts verdicts = check.sort_claims();
+  auto& violated = verdicts.violated;
+  auto& undecided = verdicts.undecided;
   if (check.counts.result.verdict == checker::Verdict::violated)
     violated.push_back("6.9(1) at count level (Lemma 6.7)");
   const std::string scope = std::to_string(check.counts.instances) +
@@ -632,8 +605,7 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
   r.figures.emplace_back("claim 6.9(1) at count level", check.counts.claim("6.7").summary() +
                                                             " (Lemma 6.7's claim; every run "
                                                             "reached its fixed point)");
-  for (const PositionalTally& c : check.claims)
-    r.figures.emplace_back("claim " + c.claim, c.summary());
+  check.figure_claims("claim ");
   r.notes.push_back(
       "statement: seed 000 Theorem 6.9 (lines 1133-1142), seed 002 Theorem 1 "
       "(line 234); on the curve by T_stab + 2: seed 000 line 1121, seed 002 line 302");
@@ -642,7 +614,7 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
                     "it stands in that region's closed square (models/mc/README.md)");
   for (const PositionalTally& c : check.claims)
     if (c.smallest) {
-      r.notes.push_back("smallest counterexample to " + c.claim + ": " + c.smallest->setting +
+      r.notes.push_back("smallest counterexample to " + c.claim.id + ": " + c.smallest->setting +
                         ", " + std::to_string(c.smallest->robots) + " robots; " + c.smallest->why);
       for (const std::string& round : c.smallest->lines) {
         std::istringstream lines(round);
@@ -653,7 +625,7 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
   for (const PositionalTally& c : check.claims)
     if (c.undecided_example) {
       r.notes.push_back(
-          "smallest undecided run of " + c.claim + ": " + c.undecided_example->setting + ", " +
+          "smallest undecided run of " + c.claim.id + ": " + c.undecided_example->setting + ", " +
           std::to_string(c.undecided_example->robots) + " robots; " + c.undecided_example->why);
       for (const std::string& round : c.undecided_example->lines) {
         std::istringstream lines(round);

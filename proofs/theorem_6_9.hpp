@@ -43,11 +43,12 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 #include "checker/result.hpp"
 #include "models/mc/positions.hpp"
-#include "proofs/lemma_6_5.hpp"
+#include "proofs/fixpoint_lemma.hpp"
 
 namespace proofs {
 
@@ -94,26 +95,22 @@ struct PositionalWitness {
   std::vector<std::string> lines; // the rounds of the run (up to 8)
   std::size_t setting_index = 0;  // in the family's enumeration order
   std::vector<mc::Robot> start;   // the robots at round 0
+
+  // Fewest robots, then the smaller grid.
+  std::tuple<std::size_t, int> order_key() const { return {robots, m}; }
 };
 
-struct PositionalTally {
-  std::string claim;
-  std::uint64_t premise = 0;                 // runs where the claim was decided
-  std::uint64_t violations = 0;              // proven failures
-  std::uint64_t undecided = 0;               // runs where it could not be decided within the rounds
-  std::optional<PositionalWitness> smallest; // fewest robots, then smaller grid, then first
-  std::optional<PositionalWitness> undecided_example; // the smallest undecided run
+// A claim of the theorem under one reading over the runs: `premise` the runs where it was
+// decided, `violations` the proven failures, `undecided` the runs where it could not be
+// decided within the rounds; the smallest counterexample and the smallest undecided run.
+using PositionalTally = Tally<PositionalWitness>;
+// "holds on 12 runs", "violated on 3 runs (decided on 12); smallest counterexample …"
+template <> std::string Tally<PositionalWitness>::summary() const;
 
-  std::string summary() const;
-};
-
-struct TheoremCheck {
-  checker::PropertyResult result;
+struct TheoremCheck : Check<PositionalWitness> {
   FixpointCheck counts; // part (1) at count level: Lemma 6.7 over the count family
-  std::vector<PositionalTally> claims;
   std::uint64_t runs = 0, rounds = 0;
-
-  const PositionalTally& claim(std::string_view id) const; // std::out_of_range if unknown
+  // `counterexample`: the smallest over the claims with positions.
 };
 
 // Under Membership::position, a proof that the assignment of a run now at `robots` never

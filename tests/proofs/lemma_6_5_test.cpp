@@ -1,6 +1,7 @@
-// Lemma 6.5 / conference Lemma 3 (proofs/lemma_6_5.hpp) and the fixed-point check it shares
-// with Lemmas 6.6 and 6.7: pinned figures on a small family for both neighbourhoods, the
-// same figures for every thread count, and a deliberately too-small bound caught.
+// Lemma 6.5 / conference Lemma 3 (proofs/lemma_6_5.hpp) and the fixed-point check
+// (proofs/fixpoint_lemma.hpp) it shares with Lemmas 6.6 and 6.7: pinned figures on a small family
+// for both neighbourhoods, the same figures for every thread count, and a deliberately too-small
+// bound caught.
 #include <catch2/catch.hpp>
 
 #include "proofs/lemma_6_5.hpp"
@@ -82,7 +83,7 @@ TEST_CASE("lemma 6.5: a too-small bound (T_out = t0) is violated, with the small
 
 TEST_CASE("lemma 6.5: the symmetry reduction leaves the worst T_out unchanged on a small family",
           "[proofs][lemma-6.5]") {
-  // The default order is not symmetric (see lemma_6_5.hpp), so this is measured, not implied.
+  // The default order is not symmetric (see fixpoint_lemma.hpp), so this is measured, not implied.
   for (auto nbh : {mc::Neighbourhood::four, mc::Neighbourhood::eight}) {
     INFO("neighbourhood " << to_string(nbh));
     Family reduced = small_family(nbh), full = small_family(nbh);

@@ -73,7 +73,7 @@ TEST_CASE("lemma 6.7: a too-small bound (one twentieth) is violated", "[proofs][
 
 TEST_CASE("lemma 6.7: the symmetry reduction leaves the worst spread unchanged on a small family",
           "[proofs][lemma-6.7]") {
-  // The default order is not symmetric (see lemma_6_5.hpp), so this is measured, not implied.
+  // The default order is not symmetric (see fixpoint_lemma.hpp), so this is measured, not implied.
   for (auto nbh : {mc::Neighbourhood::four, mc::Neighbourhood::eight}) {
     INFO("neighbourhood " << to_string(nbh));
     Family full = small_family(nbh);

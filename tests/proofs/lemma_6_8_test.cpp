@@ -117,9 +117,9 @@ TEST_CASE("lemma 6.8: the default check holds, with its coverage", "[proofs][lem
   CHECK(check.model_rounds == 213'444);
   CHECK(r.states == check.starts);
   CHECK(r.edges == check.rounds);
-  CHECK(check.claim("T: rho < 1").checked == 1400);
-  CHECK(check.claim("linear model").checked == 213'444);
-  CHECK(check.claim("contraction").checked == 211'313);
+  CHECK(check.claim("T: rho < 1").premise == 1400);
+  CHECK(check.claim("linear model").premise == 213'444);
+  CHECK(check.claim("contraction").premise == 211'313);
   for (const char* id : {"T: rho < 1", "order", "ends", "linear model", "contraction",
                          "T: Eigen = closed form", "contraction ratio (doubles)"})
     CHECK(check.claim(id).violations == 0);

@@ -41,7 +41,7 @@ TEST_CASE("round lemmas: the symmetry reduction gives the same verdicts and figu
         CHECK(a.claims[i].verdict() == b.claims[i].verdict());
         CHECK(a.claims[i].premise_represented == b.claims[i].premise);
         CHECK(a.claims[i].violations_represented == b.claims[i].violations);
-        CHECK(a.claims[i].outside_window == 0);
+        CHECK(a.claims[i].undecided == 0);
         // The smallest counterexample has the same size (it may be another image).
         CHECK(a.claims[i].smallest.has_value() == b.claims[i].smallest.has_value());
         if (a.claims[i].smallest && b.claims[i].smallest)
