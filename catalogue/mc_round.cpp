@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "models/mc/round_automaton.hpp"
+#include "proofs/fixpoint_lemma.hpp"
 #include "proofs/fixpoint_search.hpp"
 #include "proofs/lemma_6_1.hpp"
 #include "proofs/lemma_6_2.hpp"
@@ -120,7 +121,7 @@ LemmaRun one_step(const proofs::RoundLemma& (*lemma)()) {
   };
 }
 
-// Lemmas about runs to the fixed point (proofs/lemma_6_5.hpp): check_fixpoint_family or
+// Lemmas about runs to the fixed point (proofs/fixpoint_lemma.hpp): check_fixpoint_family or
 // search_fixpoint (proofs/fixpoint_search.hpp).
 LemmaRun to_fixpoint(const proofs::FixpointLemma& (*lemma)()) {
   return [lemma](const LemmaScope& scope, unsigned threads) {
