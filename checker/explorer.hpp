@@ -7,28 +7,13 @@
 // Ids, parents, counts and the first target found are therefore the same for every
 // thread count as for a plain sequential BFS, and traces are shortest in steps.
 
-#include <functional>
-#include <optional>
-#include <vector>
-
 #include "checker/exploration.hpp"
+#include "checker/hooks.hpp"
 #include "checker/options.hpp"
 #include "tioa/start_set.hpp"
 #include "tioa/successors.hpp"
 
 namespace checker {
-
-// Optional hooks; an empty hook costs nothing.
-struct ExploreHooks {
-  std::function<bool(const Word*)> expand; // expand this state? (default: yes)
-  std::function<bool(const Word*)> target; // stop at the first stored state where true
-  // Replaces every state (start or successor) by its representative before it is looked
-  // up, so the store holds one state per class. Sound only when states of one class have
-  // successors of the same classes (a bisimulation); parents then link representatives,
-  // which need not replay as a trace of the automaton.
-  std::function<void(Word*)> canonical;
-  bool record_edges = false;
-};
 
 Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::StartSet& start,
                     const ExploreOptions& options, const ExploreHooks& hooks = {});
