@@ -1,11 +1,23 @@
 #pragma once
-// Breadth-first exploration, level by level, in two phases per level:
-//  1. expand (parallel): the frontier is cut into contiguous chunks, one per thread; each
-//     thread generates the successors of its states, drops those already stored (the
-//     store is only read in this phase) and keeps the rest as candidates;
-//  2. merge (one thread): candidates are inserted chunk by chunk, in frontier order.
-// Ids, parents, counts and the first target found are therefore the same for every
-// thread count as for a plain sequential BFS, and traces are shortest in steps.
+// Breadth-first exploration, level by level. The pipeline (explorer_impl.hpp), one part
+// per header:
+//   start_insertion.hpp  level 0: the start set, canonicalised, inserted in batches;
+//   expansion.hpp        (parallel) the frontier cut into contiguous chunks, one per
+//                        worker; each generates the successors of its states, drops those
+//                        already stored (the store is only read in this phase) and keeps
+//                        the rest as candidates;
+//   merge.hpp            (one thread) candidates inserted worker by worker, in frontier
+//                        order, through insertion.hpp (the state and memory limits);
+//   run_limits.hpp       time and memory after each level;
+//   frontier.hpp         the current and the next level;
+// with memory_budget.hpp (the memory limit at every growth), state_store.hpp (the visited
+// states) and trace.hpp (paths rebuilt from parents). Ids, parents, counts and the first
+// target found are therefore the same for every thread count as for a plain sequential
+// BFS, and traces are shortest in steps.
+//
+// Hooks (hooks.hpp) are a template parameter: those a Hooks type lacks are not compiled
+// in. explore() for NoHooks and for ExploreHooks (std::function members, chosen at run
+// time) is compiled once, in explorer.cpp.
 
 #include "checker/exploration.hpp"
 #include "checker/hooks.hpp"
@@ -15,7 +27,20 @@
 
 namespace checker {
 
+template <class Hooks = NoHooks>
 Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::StartSet& start,
-                    const ExploreOptions& options, const ExploreHooks& hooks = {});
+                    const ExploreOptions& options, const Hooks& hooks = {});
+
+} // namespace checker
+
+#include "checker/explorer_impl.hpp"
+
+namespace checker {
+
+extern template Exploration explore<NoHooks>(const tioa::SuccessorGenerator&, const tioa::StartSet&,
+                                             const ExploreOptions&, const NoHooks&);
+extern template Exploration explore<ExploreHooks>(const tioa::SuccessorGenerator&,
+                                                  const tioa::StartSet&, const ExploreOptions&,
+                                                  const ExploreHooks&);
 
 } // namespace checker
