@@ -5,9 +5,9 @@ namespace checker {
 PropertyResult check_invariant(const Automaton& system, const StatePredicate& invariant,
                                const ExploreOptions& options) {
   const tioa::SuccessorGenerator generator(system);
-  ExploreHooks hooks;
-  hooks.target = [&](const Word* s) { return !invariant(tioa::State(s, 0)); };
-  const Exploration ex = explore(generator, system.start(), options, hooks);
+  const Exploration ex =
+      explore(generator, system.start(), options,
+              hooks().with_target([&](const Word* s) { return !invariant(tioa::State(s, 0)); }));
 
   PropertyResult r = result_of("invariant", ex, generator);
   if (ex.found) {

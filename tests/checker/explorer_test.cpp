@@ -495,3 +495,36 @@ TEST_CASE("explore: stuck states are reported in BFS order", "[checker][explorer
     CHECK(run(token_ring::build(4, 3).system).stuck.empty());
   }
 }
+
+TEST_CASE("explore: hooks as lambdas, as std::functions or none give the same exploration",
+          "[checker][explorer][hooks]") {
+  const auto fischer = models::build_fischer(5, 1, 2);
+  const auto& a = fischer.system;
+  const tioa::SuccessorGenerator generator(a);
+  const auto locations = slots_named(a, "loc");
+  auto waiting = [&](const Word* s) {
+    int n = 0;
+    for (const tioa::Slot& location : locations)
+      n += State(s, 0).code(location) == 2 ? 1 : 0;
+    return n;
+  };
+  auto expand = [&](const Word* s) { return waiting(s) < 3; };
+  auto target = [&](const Word* s) { return waiting(s) == 4; };
+  for (unsigned threads : {1u, 2u}) {
+    INFO(threads << " threads");
+    const ExploreOptions options = with_threads(threads);
+    ExploreHooks functions;
+    functions.expand = expand;
+    functions.target = target;
+    functions.record_edges = true;
+    const Exploration one = explore(generator, a.start(), options, functions);
+    const Exploration other = explore(generator, a.start(), options,
+                                      hooks().with_expand(expand).with_target(target).with_edges());
+    require_same(one, other);
+    CHECK(edges_of(one) == edges_of(other));
+    const Exploration none = explore(generator, a.start(), options);
+    const Exploration empty = explore(generator, a.start(), options, ExploreHooks{});
+    require_same(none, empty);
+    CHECK(none.peak_memory_bytes == empty.peak_memory_bytes);
+  }
+}

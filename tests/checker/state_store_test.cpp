@@ -188,3 +188,23 @@ TEST_CASE("states with equal hash tags stay apart", "[checker][state_store]") {
       REQUIRE(find(store, {order[i]}) == static_cast<StateId>(i));
   }
 }
+
+TEST_CASE("growth_bytes: what the next insert allocates, 0 when it allocates nothing",
+          "[checker][state_store][memory_budget]") {
+  StateStore store(2);
+  int growths = 0;
+  for (Word w = 0; w < 5000; ++w) {
+    const std::size_t growth = store.growth_bytes();
+    const std::size_t before = store.memory_bytes();
+    insert(store, {w, ~w});
+    const std::size_t after = store.memory_bytes();
+    if (growth == 0) {
+      CHECK(after == before);
+    } else {
+      ++growths;
+      CHECK(after > before);
+      CHECK(after <= before + growth); // the old buffer goes once the new one is filled
+    }
+  }
+  CHECK(growths > 4); // the arena and the table each grew a few times
+}

@@ -1,0 +1,26 @@
+#include "checker/run_limits.hpp"
+
+namespace checker {
+
+std::optional<StopReason> time_or_memory_exceeded(const Limits& limits, const Progress& progress,
+                                                  const MemoryBudget& budget) {
+  if (limits.max_seconds > 0 && progress.elapsed() > limits.max_seconds)
+    return StopReason::time_limit;
+  if (budget.exceeded())
+    return StopReason::memory_limit;
+  return std::nullopt;
+}
+
+std::optional<StopReason> stop_after_level(std::optional<StopReason> merged,
+                                           const LevelSignals& signals, const Limits& limits,
+                                           const Progress& progress, const MemoryBudget& budget) {
+  if (signals.out_of_time)
+    return StopReason::time_limit;
+  if (signals.out_of_memory)
+    return StopReason::memory_limit;
+  if (merged)
+    return merged;
+  return time_or_memory_exceeded(limits, progress, budget);
+}
+
+} // namespace checker

@@ -1,0 +1,33 @@
+#pragma once
+// The limits a run checks between the steps of the pipeline. The state limit is checked
+// at every insertion (insertion.hpp) and the memory limit at every growth
+// (memory_budget.hpp); here, time and the memory held are checked after each batch of
+// start states and after each level, and the workers' reasons to stop early are weighed.
+
+#include <atomic>
+#include <optional>
+
+#include "checker/memory_budget.hpp"
+#include "checker/options.hpp"
+#include "checker/progress.hpp"
+
+namespace checker {
+
+// Why the workers of a level stopped before the end of their chunks; set from any worker.
+struct LevelSignals {
+  std::atomic<bool> out_of_time{false};
+  std::atomic<bool> out_of_memory{false};
+};
+
+// The time limit, then the memory held.
+std::optional<StopReason> time_or_memory_exceeded(const Limits& limits, const Progress& progress,
+                                                  const MemoryBudget& budget);
+
+// Why the run stops after a level whose merge stopped for `merged` (none: the level was
+// merged whole); none when it goes on. A limit the workers met wins over the merge's
+// reason; time and memory are checked only when nothing stopped.
+std::optional<StopReason> stop_after_level(std::optional<StopReason> merged,
+                                           const LevelSignals& signals, const Limits& limits,
+                                           const Progress& progress, const MemoryBudget& budget);
+
+} // namespace checker
