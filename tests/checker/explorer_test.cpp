@@ -498,7 +498,7 @@ TEST_CASE("explore: stuck states are reported in BFS order", "[checker][explorer
 
 TEST_CASE("explore: hooks as lambdas, as std::functions or none give the same exploration",
           "[checker][explorer][hooks]") {
-  const auto fischer = models::build_fischer(5, 1, 2);
+  const auto fischer = fischer::build(5, 1, 2);
   const auto& a = fischer.system;
   const tioa::SuccessorGenerator generator(a);
   const auto locations = slots_named(a, "loc");
