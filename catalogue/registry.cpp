@@ -9,17 +9,13 @@
 #include "catalogue/token_ring.hpp"
 #include "catalogue/vlayer_mc.hpp"
 #include "support/rational.hpp"
+#include "support/text.hpp"
 
 namespace catalogue {
 
 namespace {
 
-std::string join(const std::vector<std::string>& parts) {
-  std::string out;
-  for (const auto& part : parts)
-    out += (out.empty() ? "" : ", ") + part;
-  return out;
-}
+using support::join;
 
 } // namespace
 

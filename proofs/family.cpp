@@ -1,4 +1,5 @@
 #include "proofs/family.hpp"
+#include "support/text.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -16,12 +17,7 @@ void check_side(int m) {
     throw std::invalid_argument("grid side m must be >= 1, not " + std::to_string(m));
 }
 
-std::string join(const std::vector<std::string>& parts) {
-  std::string out;
-  for (std::size_t i = 0; i < parts.size(); ++i)
-    out += (i ? ", " : "") + parts[i];
-  return out;
-}
+using support::join;
 
 // The lexicographically smallest image of values under the symmetries.
 template <class T>

@@ -1,4 +1,5 @@
 #include "proofs/fixpoint_lemma.hpp"
+#include "support/text.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -13,12 +14,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::string join(const std::vector<std::string>& parts, const std::string& separator = ", ") {
-  std::string out;
-  for (std::size_t i = 0; i < parts.size(); ++i)
-    out += (i ? separator : "") + parts[i];
-  return out;
-}
+using support::join;
 
 // "7/2 (3.5)"; whole numbers without the decimal.
 std::string show(const mc::Rational& r) {

@@ -1,4 +1,5 @@
 #include "proofs/fixpoint_search.hpp"
+#include "support/text.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -11,12 +12,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::string join(const std::vector<std::string>& parts, const std::string& separator = ", ") {
-  std::string out;
-  for (std::size_t i = 0; i < parts.size(); ++i)
-    out += (i ? separator : "") + parts[i];
-  return out;
-}
+using support::join;
 
 // M_0 of one sample: a third of the samples each uniform, piles, or a plateau with dips.
 Counts population(SplitMix64& random, std::size_t regions, RobotCount max_count) {

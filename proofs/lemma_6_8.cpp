@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include "models/mc/spacing.hpp"
+#include "support/text.hpp"
 
 namespace proofs {
 
@@ -20,12 +21,7 @@ using Clock = std::chrono::steady_clock;
 using mc::Rational;
 using Vector = std::vector<Rational>;
 
-std::string join(const std::vector<std::string>& parts, const std::string& separator = ", ") {
-  std::string out;
-  for (std::size_t i = 0; i < parts.size(); ++i)
-    out += (i ? separator : "") + parts[i];
-  return out;
-}
+using support::join;
 
 std::string show(const Vector& values) {
   std::vector<std::string> parts;
@@ -38,10 +34,6 @@ std::string number(double value, const char* format = "%.6g") {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, format, value);
   return buffer;
-}
-
-std::string count(std::uint64_t value) {
-  return std::to_string(value);
 }
 
 enum ClaimId {
@@ -601,8 +593,8 @@ std::vector<std::string> Lemma68Counterexample::lines() const {
 
 template <> std::string Tally<Lemma68Counterexample>::summary() const {
   if (violations == 0)
-    return "holds (checked " + count(premise) + " times)";
-  std::string out = "violated in " + count(violations) + " of " + count(premise);
+    return "holds (checked " + std::to_string(premise) + " times)";
+  std::string out = "violated in " + std::to_string(violations) + " of " + std::to_string(premise);
   if (smallest)
     out += "; smallest counterexample " +
            (smallest->length ? std::to_string(smallest->robots) + " robots"
@@ -773,8 +765,9 @@ Lemma68Check check_lemma_6_8(const Lemma68Family& family, const CheckOptions& op
   r.depth = static_cast<std::uint32_t>(family.rounds);
   r.threads = std::max(1u, options.threads);
   r.time_unit = "rounds";
-  const std::string scope = count(check.matrices) + " (n, rho1) pairs, " + count(check.starts) +
-                            " starts, " + count(check.rounds) + " rounds";
+  const std::string scope = std::to_string(check.matrices) + " (n, rho1) pairs, " +
+                            std::to_string(check.starts) + " starts, " +
+                            std::to_string(check.rounds) + " rounds";
   if (!violated.empty()) {
     r.verdict = checker::Verdict::violated;
     r.message = "violated: " + join(violated) +
@@ -791,13 +784,15 @@ Lemma68Check check_lemma_6_8(const Lemma68Family& family, const CheckOptions& op
     r.message += "; reported beside them, not deciding: " + join(reported) + " fails";
 
   r.figures.emplace_back("covered", family.describe());
-  r.figures.emplace_back("matrices", count(check.matrices) +
+  r.figures.emplace_back("matrices", std::to_string(check.matrices) +
                                          " (n, rho1) pairs; printed T in full " +
-                                         count(check.printed_matrices));
-  r.figures.emplace_back("start configurations",
-                         count(check.starts) + " (" + count(check.grid_starts) +
-                             " from the grid) over " + count(check.settings) + " (L, rho1)");
-  r.figures.emplace_back("rounds run", count(check.rounds) + " (" + count(check.model_rounds) +
+                                         std::to_string(check.printed_matrices));
+  r.figures.emplace_back("start configurations", std::to_string(check.starts) + " (" +
+                                                     std::to_string(check.grid_starts) +
+                                                     " from the grid) over " +
+                                                     std::to_string(check.settings) + " (L, rho1)");
+  r.figures.emplace_back("rounds run", std::to_string(check.rounds) + " (" +
+                                           std::to_string(check.model_rounds) +
                                            " checked against T)");
   r.figures.emplace_back("largest rho(T)", number(check.largest_spectral_radius, "%.12g") +
                                                " at n = " + std::to_string(check.largest_at_n) +
@@ -811,7 +806,7 @@ Lemma68Check check_lemma_6_8(const Lemma68Family& family, const CheckOptions& op
             " (rho1 pi^2/2(n+1)^2 = " + number(rate.asymptotic, "%.4g") + "); " +
             (rate.rounds_to_1e6 == 0
                  ? std::string("never shrinks (rho(T) >= 1)")
-                 : count(rate.rounds_to_1e6) + " rounds to shrink the error by 1e-6"));
+                 : std::to_string(rate.rounds_to_1e6) + " rounds to shrink the error by 1e-6"));
   r.figures.emplace_back("printed T",
                          "largest rho " + number(check.printed_largest_spectral_radius, "%.12g") +
                              " at n = " + std::to_string(check.printed_largest_at_n) +
@@ -825,10 +820,11 @@ Lemma68Check check_lemma_6_8(const Lemma68Family& family, const CheckOptions& op
       "dynamics", "largest ||e(k+1)||/||e(k)|| " + number(check.largest_ratio, "%.9g") +
                       " (ratio / rho(T) at most " + number(check.largest_ratio_over_rho, "%.9g") +
                       "); after " + std::to_string(family.rounds) + " rounds max |e_i|/L " +
-                      number(check.largest_final_error, "%.3g") + ", " + count(check.reached_even) +
+                      number(check.largest_final_error, "%.3g") + ", " +
+                      std::to_string(check.reached_even) +
                       " starts exactly even; ||e|| grew in "
                       "round 0 -> 1 (ends not yet set) from " +
-                      count(check.first_round_growth) + " starts");
+                      std::to_string(check.first_round_growth) + " starts");
   check.figure_claims("reported ");
   check.note_statements("reported ");
   check.note_witnesses();

@@ -1,4 +1,5 @@
 #include "proofs/round_lemma.hpp"
+#include "support/text.hpp"
 
 #include <algorithm>
 #include <array>
@@ -126,12 +127,7 @@ void check_instance(const RoundLemma& lemma, const Setting& setting, const mc::R
   }
 }
 
-std::string join(const std::vector<std::string>& parts, const std::string& separator) {
-  std::string out;
-  for (std::size_t i = 0; i < parts.size(); ++i)
-    out += (i ? separator : "") + parts[i];
-  return out;
-}
+using support::join;
 
 // The PropertyResult of a finished run. `covered` describes what was checked.
 LemmaCheck finish(const RoundLemma& lemma, Tallies&& tallies, const std::string& covered,

@@ -9,6 +9,7 @@
 
 #include "models/mc/spacing.hpp"
 #include "proofs/lemma_6_7.hpp"
+#include "support/text.hpp"
 
 namespace proofs {
 
@@ -22,12 +23,7 @@ RationalPoint at(const Rational& x, const Rational& y) {
   return {x, y};
 }
 
-std::string join(const std::vector<std::string>& parts, const std::string& separator = ", ") {
-  std::string out;
-  for (std::size_t i = 0; i < parts.size(); ++i)
-    out += (i ? separator : "") + parts[i];
-  return out;
-}
+using support::join;
 
 const char* name(mc::Membership membership) {
   return membership == mc::Membership::position ? "position" : "assigned";
