@@ -7,11 +7,12 @@
 // (Extraction: "L1" and "MC" stand on two lines, read L1_MC; "εsample" is read ε_sample; the
 // hyphenated "rel-ative" is joined.)
 //
-// Checked as: VLNodes[MC] started anywhere (U) with R(Vbcast‖RW‖VW) is in L1MC from any
-// time t > ε_sample on, measured as the least whole t (quanta) with checker::
-// check_stabilisation and judged against the bound ε_sample + 1. A time above the bound is a
-// counterexample (L1MC is decided exactly), given with the clauses of Def 7.1 that the last
-// state outside L1MC breaks. Faults and start states: proofs/vlayer_mc/stabilisation_common.hpp.
+// Checked as: VLNodes[MC] started anywhere (U) with R(Vbcast‖RW‖VW) is in L1MC from
+// any time t > ε_sample on. The least whole t (quanta) is measured with
+// checker::check_stabilisation and judged against the bound ε_sample + 1. A time above
+// the bound is a counterexample (L1MC is decided exactly), given with the clauses of
+// Def 7.1 that the last state outside L1MC breaks. Faults and start states:
+// proofs/vlayer_mc/stabilisation_common.hpp.
 
 #include "checker/options.hpp"
 #include "checker/result.hpp"

@@ -4,8 +4,8 @@
 // Seed 000 (journal), §7.2, lines 1295–1296:
 //   "THEOREM 7.5. VLNodes[MC] is self-stabilizing to LMC in time δ + d + e + ε_sample
 //    relative to R(Vbcast‖RW‖VW)."
-// (Extraction: "εsample" is read ε_sample.) The text before it (lines 1290–1293) derives it
-// "from transitivity of stabilization and 7.4", Lemma 3.4 of the seed.
+// (Extraction: "εsample" is read ε_sample.) The text before it (lines 1290–1293) says "From
+// transitivity of stabilization and 7.4, the next result follows": Lemma 3.4 (line 442).
 //
 // Checked as: U(VLNodes) ‖ R(Vbcast‖RW‖VW) is in LMC from δ + d + e + ε_sample on, measured
 // directly (an upper bound on the time into LMC, as in Lemma 7.4: a time above the bound is
