@@ -1,9 +1,12 @@
 #include "catalogue/vlayer_mc.hpp"
 
 #include "models/vlayer_mc/vlayer.hpp"
+#include "proofs/lemma_7_3.hpp"
+#include "proofs/lemma_7_4.hpp"
+#include "proofs/lemma_7_6.hpp"
+#include "proofs/lemma_7_7.hpp"
+#include "proofs/theorem_7_5.hpp"
 #include "proofs/vlayer_mc/legal_sets.hpp"
-#include "proofs/vlayer_mc/simulation.hpp"
-#include "proofs/vlayer_mc/stabilisation.hpp"
 #include "tioa/operators.hpp"
 
 namespace catalogue {

@@ -1,6 +1,6 @@
 #pragma once
 // The simulation relation R_MC of seed 000 §7.3 (lines 1300–1335), the relation of
-// Lemmas 7.6 and 7.7 (proofs/vlayer_mc/simulation.hpp).
+// Lemmas 7.6 and 7.7 (proofs/lemma_7_6.hpp, proofs/lemma_7_7.hpp).
 //
 // The paper gives only "some of the conditions" (Appendix C is not in the seed):
 //   (1) the same real time and locations,  (2) per client: RW's velocity equal or y's ⊥,
@@ -37,7 +37,7 @@ namespace vlayer_mc {
 
 // Which reading of the parts the paper leaves open: `strict` compares all of a live CN;
 // `loose` adds (5′); `loose_reg` adds (4′) too, departing from the printed part (4). The
-// checks of simulation.hpp decide with `loose` unless told, and lemma-7.7 reports all three
+// checks of Lemmas 7.6 and 7.7 decide with `loose` unless told, and lemma-7.7 reports all three
 // counts.
 enum class RmcReading { strict, loose, loose_reg };
 

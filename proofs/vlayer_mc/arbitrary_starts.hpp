@@ -1,7 +1,7 @@
 #pragma once
 // The start states of U(VLNodes) ‖ R(RW ‖ VW ‖ VBcast ‖ ClientFaults) (seed 000 §7.2) as
 // states of VLayer[MC] with no fault action enabled (faults before t0 only: D13): all of
-// them when there are few enough, else a seeded sample (proofs/vlayer_mc/stabilisation.hpp).
+// them when there are few enough, else a seeded sample (proofs/vlayer_mc/stabilisation_common.hpp).
 
 #include <cstdint>
 #include <string>

@@ -6,15 +6,21 @@
 #include "models/vlayer_mc/lmc.hpp"
 #include "models/vlayer_mc/reset_mc.hpp"
 #include "models/vlayer_mc/slots.hpp"
+#include "proofs/vlayer_mc/legal_sets.hpp"
 #include "tioa/successors.hpp"
 
 namespace vlayer_mc {
 
 namespace {
 
+using checker::PropertyResult;
 using checker::StateId;
 using tioa::Slot;
 using tioa::Word;
+
+std::string count(std::uint64_t n) {
+  return std::to_string(n);
+}
 
 std::vector<std::vector<Word>> family_states(const VlConfig& c, const tioa::Automaton& layer) {
   std::vector<std::vector<Word>> out;
@@ -116,6 +122,38 @@ closest(const RmcRelation& relation, const checker::Exploration& reach, const Wo
     }
   }
   return best;
+}
+
+std::string joined(const std::vector<std::string>& parts, const char* separator) {
+  std::string out;
+  for (const auto& part : parts)
+    out += (out.empty() ? "" : separator) + part;
+  return out;
+}
+
+std::string family_figure(const VlConfig& c, const Matching& m) {
+  return "the " + describe_reset_family(c) + "; " + count(m.in_reset_mc) +
+         " of them meet Def 7.2 " +
+         "with the window read; the family, not all of ResetMC (V_u, VW's ages and GPS ages " +
+         "are left free by Def 7.2)";
+}
+
+void note_rmc_reading(const VlConfig& c, MWindow window, RmcReading reading, PropertyResult& r) {
+  r.notes.push_back(std::string("R_MC, ") + to_string(reading) +
+                    " reading: parts (1)-(4) of seed 000 §7.3 and, for the parts Appendix C "
+                    "would give, every live node's state equal (README, R_MC, D17-D21)" +
+                    (reading == RmcReading::strict
+                         ? ""
+                         : "; CN's target may be ⊥ or x_p on either side while its cn-update is "
+                           "due (D20)") +
+                    (reading == RmcReading::loose_reg
+                         ? "; Vbcast.reg(p) may differ while p's GPSupdate is due and nothing "
+                           "reads it first (D21, beyond the printed part (4))"
+                         : ""));
+  r.notes.push_back(window == MWindow::closed
+                        ? "ResetMC read with the window [0, e + 2d + 2ε] of Def 7.1(2) (F1)"
+                        : "ResetMC read with Def 7.1(2) as printed");
+  note_round_length(c, r);
 }
 
 } // namespace vlayer_mc

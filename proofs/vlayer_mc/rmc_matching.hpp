@@ -1,6 +1,7 @@
 #pragma once
 // Reach and the ResetMC family, matched by R_MC (models/vlayer_mc/rmc_relation.hpp): the
-// search that Lemmas 7.6 and 7.7 (proofs/vlayer_mc/simulation.hpp) both start from. Reach is
+// search that Lemmas 7.6 and 7.7 (proofs/lemma_7_6.hpp, proofs/lemma_7_7.hpp) both start from,
+// and the figures and notes both report. Reach is
 // every state reachable in VLayer[MC] with failures and restarts of robots and VSAs, from
 // every placement of the robots with no node failed; each state of the `reset_family`
 // (models/vlayer_mc/lmc.hpp) is compared with the reachable states of the same
@@ -14,6 +15,7 @@
 
 #include "checker/explorer.hpp"
 #include "checker/options.hpp"
+#include "checker/result.hpp"
 #include "models/vlayer_mc/config.hpp"
 #include "models/vlayer_mc/l1mc.hpp"
 #include "models/vlayer_mc/rmc_relation.hpp"
@@ -57,5 +59,16 @@ Matching match_family(const VlConfig& config, const tioa::Automaton& layer,
 // The reachable state that breaks the fewest conditions of R_MC with x, and what it breaks.
 std::pair<checker::StateId, std::vector<std::string>>
 closest(const RmcRelation& relation, const checker::Exploration& reach, const tioa::Word* x);
+
+// The parts, one after the other: "a, b, c".
+std::string joined(const std::vector<std::string>& parts, const char* separator = ", ");
+
+// What the figure `covered` of Lemmas 7.6 and 7.7 says of the family.
+std::string family_figure(const VlConfig& config, const Matching& m);
+
+// The notes of Lemmas 7.6 and 7.7: the reading of R_MC and of Def 7.1(2), and the
+// round-length warning (proofs/vlayer_mc/legal_sets.hpp).
+void note_rmc_reading(const VlConfig& config, MWindow window, RmcReading reading,
+                      checker::PropertyResult& result);
 
 } // namespace vlayer_mc

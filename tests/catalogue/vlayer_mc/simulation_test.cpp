@@ -1,12 +1,13 @@
 // R_MC (seed 000 §7.3) on hand-made pairs of VLayer[MC] states, part by part, and the checks
-// of Lemmas 7.6 and 7.7 (proofs/vlayer_mc/simulation.hpp) on the smallest instances: one
+// of Lemmas 7.6 and 7.7 (proofs/lemma_7_6.hpp, proofs/lemma_7_7.hpp) on the smallest instances: one
 // robot, the cheap constants of VlConfig, 1×1 and 1×2 grids.
 #include <catch2/catch.hpp>
 
 #include "models/vlayer_mc/lmc.hpp"
 #include "models/vlayer_mc/rw.hpp"
 #include "models/vlayer_mc/vlayer.hpp"
-#include "proofs/vlayer_mc/simulation.hpp"
+#include "proofs/lemma_7_6.hpp"
+#include "proofs/lemma_7_7.hpp"
 #include "tests/catalogue/vlayer_mc/vl_results.hpp"
 #include "tests/models/vlayer_mc/vl_helpers.hpp"
 

@@ -1,7 +1,7 @@
-// The stabilisation properties of `vlayer-mc` (proofs/vlayer_mc/stabilisation.hpp): Lemma 7.3,
-// Lemma 7.4 and Theorem 7.5 on the 1×1 grid with one robot and the cheap constants (δ = 6,
-// d = 1, e = ε = 0, ε_sample = 1, d_r = 1, v_max = 4), window closed, 1 000 start states drawn
-// with seed 1 from U(VLNodes) × R(env); and finding F5 on 1×2 (README).
+// The stabilisation properties of `vlayer-mc`: Lemma 7.3, Lemma 7.4 and Theorem 7.5
+// (proofs/lemma_7_3.hpp, lemma_7_4.hpp, theorem_7_5.hpp) on the 1×1 grid with one robot and the
+// cheap constants (δ = 6, d = 1, e = ε = 0, ε_sample = 1, d_r = 1, v_max = 4), window closed, 1 000
+// start states drawn with seed 1 from U(VLNodes) × R(env); and finding F5 on 1×2 (README).
 #include <catch2/catch.hpp>
 
 #include "checker/trace.hpp"

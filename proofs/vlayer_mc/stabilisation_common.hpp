@@ -1,12 +1,7 @@
 #pragma once
-// The stabilisation results of seed 000 §7.2 (lines 1264–1290) on VLayer[MC]:
-//
-//   lemma-7.3    VLNodes[MC] started anywhere (U) with R(Vbcast‖RW‖VW) is in L1MC from any
-//                time t > ε_sample on: measured as the least whole t (quanta), bound
-//                ε_sample + 1;
-//   lemma-7.4    executions started in L1MC are in LMC from time δ + d + e on;
-//   theorem-7.5  U(VLNodes) ‖ R(Vbcast‖RW‖VW) is in LMC from δ + d + e + ε_sample on, measured
-//                directly and through Lemma 3.4 (t ≤ t1 + t2).
+// What the stabilisation checks of seed 000 §7.2 on VLayer[MC] share: Lemma 7.3
+// (proofs/lemma_7_3.hpp), Lemma 7.4 (proofs/lemma_7_4.hpp) and Theorem 7.5
+// (proofs/theorem_7_5.hpp).
 //
 // Faults: the lemmas speak of executions after t0, the last failure or restart (§7, line
 // 1340). The system has no fault actions enabled (D13) and U(VLNodes) lets every `failed`
@@ -26,25 +21,36 @@
 // broken on one of them is a real counterexample). The environment's reachable states are
 // listed when there are at most `environment_limit` (1×1 with one robot has 3.5 million:
 // VBcast may hold any message), else each sample ends a seeded random walk in it. The
-// figure `covered` says which.
+// figure `covered` says which (proofs/vlayer_mc/arbitrary_starts.hpp).
 
 #include <cstdint>
+#include <string>
 
 #include "checker/options.hpp"
 #include "checker/result.hpp"
-#include "models/vlayer_mc/l1mc.hpp"
-#include "proofs/vlayer_mc/arbitrary_starts.hpp"
+#include "models/vlayer_mc/state_list.hpp"
+#include "proofs/vlayer_mc/known_lmc.hpp"
+#include "tioa/automaton.hpp"
 
 namespace vlayer_mc {
 
-checker::PropertyResult check_lemma_7_3(const VlConfig& config, MWindow window,
-                                        const ArbitraryStarts& starts,
-                                        const checker::ExploreOptions& options);
-checker::PropertyResult check_lemma_7_4(const VlConfig& config, MWindow window,
-                                        const ArbitraryStarts& starts,
-                                        const checker::ExploreOptions& options);
-checker::PropertyResult check_theorem_7_5(const VlConfig& config, MWindow window,
-                                          const ArbitraryStarts& starts,
-                                          const checker::ExploreOptions& options);
+// The states of `system`'s exploration that satisfy `keep`, as a list; `complete` becomes
+// false when the exploration hit a limit (it is never set true).
+StateList reached_where(const tioa::Automaton& system, const tioa::StatePredicate& keep,
+                        const checker::ExploreOptions& options, bool& complete);
+
+// A stabilisation measurement `m` judged against `bound` (quanta): holds (when
+// `exhaustive`), incomplete or violated, with the figures `bound` and `measured`. `exact`
+// says whether a time above the bound is a counterexample (false: only an upper bound was
+// measured); `detail` is added to the message of a failure.
+checker::PropertyResult judge(checker::PropertyResult m, std::uint64_t bound,
+                              const std::string& what, bool exhaustive, bool exact,
+                              const std::string& detail);
+
+// The figure `known LMC`: how many classes the known part of LMC has, and from what.
+std::string describe_known(const KnownLmc& known);
+
+// The note of the checks that measure the time into LMC (Lemma 7.4, Theorem 7.5).
+extern const char* const lmc_measure_note;
 
 } // namespace vlayer_mc

@@ -1,0 +1,60 @@
+#include "proofs/lemma_7_3.hpp"
+
+#include <cstdint>
+#include <string>
+
+#include "checker/checks.hpp"
+#include "proofs/vlayer_mc/legal_sets.hpp"
+#include "proofs/vlayer_mc/stabilisation_common.hpp"
+#include "tioa/operators.hpp"
+
+namespace vlayer_mc {
+
+namespace {
+
+using checker::PropertyResult;
+
+std::string count(std::uint64_t n) {
+  return std::to_string(n);
+}
+
+// The clauses of `clauses` that the last state of the trace outside `legal` breaks.
+std::string last_outside(const PropertyResult& r, const tioa::StatePredicate& legal,
+                         const ClauseCheck& clauses) {
+  if (!r.trace)
+    return "";
+  for (auto it = r.trace->steps.rbegin(); it != r.trace->steps.rend(); ++it) {
+    const tioa::State s(it->state.data(), 0);
+    if (!legal(s)) {
+      std::string broken;
+      for (const auto& clause : clauses(s))
+        broken += (broken.empty() ? "" : ", ") + clause;
+      return "the last state outside, at time " + count(it->time) + " after " +
+             (it->action.empty() ? std::string("the start") : it->action) + ", breaks " + broken;
+    }
+  }
+  return "";
+}
+
+} // namespace
+
+PropertyResult check_lemma_7_3(const VlConfig& c, MWindow window, const ArbitraryStarts& starts,
+                               const checker::ExploreOptions& options) {
+  const UStarts u = u_starts(c, starts, options);
+  const tioa::StatePredicate legal = l1mc(c, u.layer, window);
+  PropertyResult m = checker::check_stabilisation(
+      tioa::Start(u.layer, u.states.start(u.layer, "U(VLNodes) || R(RW || VW || VBcast)")), legal,
+      options);
+  const std::string detail = last_outside(m, legal, l1mc_clauses(c, u.layer, window));
+  PropertyResult r =
+      judge(std::move(m), static_cast<std::uint64_t>(c.eps_sample) + 1,
+            "Lemma 7.3 (in L1MC from any t > eps_sample on)", u.exhaustive, true, detail);
+  r.figures.emplace_back("covered", u.covered);
+  r.notes.push_back("the bound: time t > eps_sample = " + count(c.eps_sample) +
+                    " is, in whole quanta, t = eps_sample + 1");
+  r.notes.push_back("no failure or restart after t0 = 0; failed flags start arbitrary (D13)");
+  note_round_length(c, r);
+  return r;
+}
+
+} // namespace vlayer_mc

@@ -1,0 +1,70 @@
+#include "proofs/lemma_7_4.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "checker/checks.hpp"
+#include "models/vlayer_mc/reset_mc.hpp"
+#include "models/vlayer_mc/vlayer.hpp"
+#include "proofs/vlayer_mc/known_lmc.hpp"
+#include "proofs/vlayer_mc/legal_sets.hpp"
+#include "proofs/vlayer_mc/stabilisation_common.hpp"
+#include "tioa/operators.hpp"
+
+namespace vlayer_mc {
+
+namespace {
+
+using checker::PropertyResult;
+
+std::string count(std::uint64_t n) {
+  return std::to_string(n);
+}
+
+// The robots at the bottom-left corner, nothing failed: the instance of the other properties.
+tioa::Automaton placed_instance(const VlConfig& c, const tioa::Automaton& layer) {
+  const Lattice lattice = c.lattice();
+  std::vector<Point> at;
+  for (int robot = 0; robot < c.robots; ++robot)
+    at.push_back(lattice.point(robot, lattice.height() - 1));
+  return tioa::Start(layer, placed_start(layer, at));
+}
+
+} // namespace
+
+PropertyResult check_lemma_7_4(const VlConfig& c, MWindow window, const ArbitraryStarts& starts,
+                               const checker::ExploreOptions& options) {
+  const UStarts u = u_starts(c, starts, options);
+  const tioa::StatePredicate in_l1mc = l1mc(c, u.layer, window);
+  bool complete = true;
+  StateList from = reached_where(placed_instance(c, u.layer), in_l1mc, options, complete);
+  const std::size_t from_instance = from.size();
+  const StateList arbitrary =
+      reached_where(tioa::Start(u.layer, u.states.start(u.layer, "U(VLNodes) || R(env)")), in_l1mc,
+                    options, complete);
+  from.data.insert(from.data.end(), arbitrary.data.begin(), arbitrary.data.end());
+  const KnownLmc known(c, u.layer, options);
+  complete = complete && known.complete();
+  const tioa::StatePredicate reset = reset_mc_or_targetless(c, u.layer, window);
+  const tioa::StatePredicate in_lmc = [&](const tioa::State& s) {
+    return reset(s) || known.contains(s);
+  };
+  PropertyResult m = checker::check_stabilisation(
+      tioa::Start(u.layer, from.start(u.layer, "L1MC states reached")), in_lmc, in_lmc, options);
+  PropertyResult r =
+      judge(std::move(m), static_cast<std::uint64_t>(c.delta + c.d + c.e),
+            "Lemma 7.4 (from L1MC, in LMC from delta + d + e on)", complete, false, "");
+  r.figures.emplace_back("known LMC", describe_known(known));
+  r.figures.emplace_back(
+      "covered", "the " + count(from_instance) + " L1MC states reachable from " +
+                     placed_instance(c, u.layer).start().description() + " and the " +
+                     count(arbitrary.size()) + " L1MC states reached from " + u.covered +
+                     " (duplicates counted once by the exploration), not all of L1MC: its " +
+                     "valuations are too many to enumerate");
+  r.notes.push_back(lmc_measure_note);
+  note_round_length(c, r);
+  return r;
+}
+
+} // namespace vlayer_mc

@@ -1,0 +1,80 @@
+#include "proofs/vlayer_mc/stabilisation_common.hpp"
+
+#include "checker/explorer.hpp"
+#include "tioa/successors.hpp"
+
+namespace vlayer_mc {
+
+namespace {
+
+using checker::PropertyResult;
+using checker::Verdict;
+using tioa::Word;
+
+std::string count(std::uint64_t n) {
+  return std::to_string(n);
+}
+
+} // namespace
+
+StateList reached_where(const tioa::Automaton& system, const tioa::StatePredicate& keep,
+                        const checker::ExploreOptions& options, bool& complete) {
+  const tioa::SuccessorGenerator generator(system);
+  const checker::Exploration ex = checker::explore(generator, system.start(), options);
+  complete = complete && ex.complete();
+  StateList out{system.words(), {}};
+  for (checker::StateId id = 0; id < ex.store.size(); ++id) {
+    const Word* w = ex.store.state(id);
+    if (keep(tioa::State(w, 0)))
+      out.data.insert(out.data.end(), w, w + system.words());
+  }
+  return out;
+}
+
+const char* const lmc_measure_note =
+    "an execution is counted in LMC from the first state that is in ResetMC, or a ResetMC state "
+    "but for targets its due cn-updates overwrite (D30), or in the known part of LMC (D29): an "
+    "upper bound on the time into LMC, so a time above the bound, or a "
+    "cycle that never gets there, is reported as not confirmed, not as a counterexample";
+
+std::string describe_known(const KnownLmc& known) {
+  return count(known.size()) + " classes (D29) of the states reachable from " +
+         count(known.family_size()) +
+         " ResetMC states (the reset family with every combination of failed nodes)" +
+         (known.complete() ? "" : ", stopped on a limit");
+}
+
+PropertyResult judge(PropertyResult m, std::uint64_t bound, const std::string& what,
+                     bool exhaustive, bool exact, const std::string& detail) {
+  m.figures.emplace_back("bound", count(bound) + " " + m.time_unit);
+  if (m.verdict == Verdict::violated && !exact) {
+    // A cycle that never meets the settled states: not a counterexample, since LMC is
+    // only known in part.
+    m.verdict = Verdict::incomplete;
+    m.trace_role = "witness";
+    m.message =
+        what + " not confirmed: " + m.message + " (outside ResetMC and the known part of LMC)";
+    return m;
+  }
+  if (m.verdict == Verdict::incomplete || m.verdict == Verdict::violated) {
+    if (m.verdict == Verdict::violated)
+      m.message = what + " fails: " + m.message + (detail.empty() ? "" : "; " + detail);
+    return m;
+  }
+  const std::uint64_t worst = m.worst_time.value_or(0);
+  m.figures.emplace_back("measured", count(worst) + " " + m.time_unit);
+  const std::string measured = "measured worst time " + count(worst) + " " + m.time_unit +
+                               " against the bound " + count(bound);
+  if (worst > bound) {
+    m.trace_role = exact ? "counterexample" : "witness";
+    m.verdict = exact ? Verdict::violated : Verdict::incomplete;
+    m.message = what + (exact ? " fails: " : " not confirmed: ") + measured +
+                (detail.empty() ? "" : "; " + detail);
+    return m;
+  }
+  m.verdict = exhaustive ? Verdict::holds : Verdict::incomplete;
+  m.message = what + (exhaustive ? " holds: " : " holds on every start state sampled: ") + measured;
+  return m;
+}
+
+} // namespace vlayer_mc
