@@ -14,10 +14,6 @@ namespace {
 
 using checker::PropertyResult;
 
-std::string count(std::uint64_t n) {
-  return std::to_string(n);
-}
-
 // The clauses of `clauses` that the last state of the trace outside `legal` breaks.
 std::string last_outside(const PropertyResult& r, const tioa::StatePredicate& legal,
                          const ClauseCheck& clauses) {
@@ -29,7 +25,7 @@ std::string last_outside(const PropertyResult& r, const tioa::StatePredicate& le
       std::string broken;
       for (const auto& clause : clauses(s))
         broken += (broken.empty() ? "" : ", ") + clause;
-      return "the last state outside, at time " + count(it->time) + " after " +
+      return "the last state outside, at time " + std::to_string(it->time) + " after " +
              (it->action.empty() ? std::string("the start") : it->action) + ", breaks " + broken;
     }
   }
@@ -50,7 +46,7 @@ PropertyResult check_lemma_7_3(const VlConfig& c, MWindow window, const Arbitrar
       judge(std::move(m), static_cast<std::uint64_t>(c.eps_sample) + 1,
             "Lemma 7.3 (in L1MC from any t > eps_sample on)", u.exhaustive, true, detail);
   r.figures.emplace_back("covered", u.covered);
-  r.notes.push_back("the bound: time t > eps_sample = " + count(c.eps_sample) +
+  r.notes.push_back("the bound: time t > eps_sample = " + std::to_string(c.eps_sample) +
                     " is, in whole quanta, t = eps_sample + 1");
   r.notes.push_back("no failure or restart after t0 = 0; failed flags start arbitrary (D13)");
   note_round_length(c, r);

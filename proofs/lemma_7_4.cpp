@@ -18,10 +18,6 @@ namespace {
 
 using checker::PropertyResult;
 
-std::string count(std::uint64_t n) {
-  return std::to_string(n);
-}
-
 // The robots at the bottom-left corner, nothing failed: the instance of the other properties.
 tioa::Automaton placed_instance(const VlConfig& c, const tioa::Automaton& layer) {
   const Lattice lattice = c.lattice();
@@ -57,9 +53,9 @@ PropertyResult check_lemma_7_4(const VlConfig& c, MWindow window, const Arbitrar
             "Lemma 7.4 (from L1MC, in LMC from delta + d + e on)", complete, false, "");
   r.figures.emplace_back("known LMC", describe_known(known));
   r.figures.emplace_back(
-      "covered", "the " + count(from_instance) + " L1MC states reachable from " +
+      "covered", "the " + std::to_string(from_instance) + " L1MC states reachable from " +
                      placed_instance(c, u.layer).start().description() + " and the " +
-                     count(arbitrary.size()) + " L1MC states reached from " + u.covered +
+                     std::to_string(arbitrary.size()) + " L1MC states reached from " + u.covered +
                      " (duplicates counted once by the exploration), not all of L1MC: its " +
                      "valuations are too many to enumerate");
   r.notes.push_back(lmc_measure_note);

@@ -20,10 +20,6 @@ using checker::PropertyResult;
 using checker::StateId;
 using checker::Verdict;
 
-std::string count(std::uint64_t n) {
-  return std::to_string(n);
-}
-
 // The actions of the trace's steps, from `first` on.
 std::vector<std::string> actions_from(const checker::Trace& trace, std::size_t first) {
   std::vector<std::string> out;
@@ -77,13 +73,14 @@ PropertyResult check_lemma_7_6(const VlConfig& c, const tioa::Automaton& layer, 
   r.edges = search.edges;
   r.depth = search.depth;
   r.seconds = search.seconds;
-  r.figures.emplace_back("covered", "the pairs reachable from the " + count(search.initial_pairs) +
+  r.figures.emplace_back("covered", "the pairs reachable from the " +
+                                        std::to_string(search.initial_pairs) +
                                         " initial pairs (x a family state, y each related "
                                         "reachable state; " +
                                         family_figure(c, m) + ")");
-  r.figures.emplace_back("pairs", count(search.pairs));
-  r.figures.emplace_back("initial pairs", count(search.initial_pairs));
-  r.figures.emplace_back("Reach", count(m.reach.store.size()));
+  r.figures.emplace_back("pairs", std::to_string(search.pairs));
+  r.figures.emplace_back("initial pairs", std::to_string(search.initial_pairs));
+  r.figures.emplace_back("Reach", std::to_string(m.reach.store.size()));
 
   if (search.violation) {
     // The x-trace from its family state, then the step y cannot match; y's trace as a note.
@@ -98,7 +95,8 @@ PropertyResult check_lemma_7_6(const VlConfig& c, const tioa::Automaton& layer, 
     r.trace = v.x_trace;
     r.trace_role = "counterexample";
     r.trace_kind = "simulation-step";
-    r.message = "the step " + gx.describe(v.step) + " from x after " + count(v.y_trace.length()) +
+    r.message = "the step " + gx.describe(v.step) + " from x after " +
+                std::to_string(v.y_trace.length()) +
                 " matched steps has no step of y with the same label to a related state (" +
                 (why.empty() ? std::string("y has no such step") : joined(why, "; ")) + ")";
     r.notes.push_back("y: reached by " + actions_of(to_y) + "; then " +
@@ -107,18 +105,19 @@ PropertyResult check_lemma_7_6(const VlConfig& c, const tioa::Automaton& layer, 
   }
   if (!search.holds()) {
     r.verdict = Verdict::incomplete;
-    r.message = std::string(checker::describe(search.stop)) + " after " + count(search.pairs) +
+    r.message = std::string(checker::describe(search.stop)) + " after " +
+                std::to_string(search.pairs) +
                 " pairs: every step from the pairs expanded was matched";
     return r;
   }
   r.verdict = Verdict::holds;
-  r.message = "every step and tick of x in each of the " + count(search.pairs) +
+  r.message = "every step and tick of x in each of the " + std::to_string(search.pairs) +
               " pairs reachable from the initial pairs is matched by y with the same label to a "
               "related pair";
   const auto none = std::count_if(m.related.begin(), m.related.end(),
                                   [](const auto& related) { return related.empty(); });
   if (none > 0)
-    r.notes.push_back(count(static_cast<std::uint64_t>(none)) +
+    r.notes.push_back(std::to_string(static_cast<std::uint64_t>(none)) +
                       " family states have no related reachable state (lemma-7.7): no pair "
                       "starts from them");
   return r;

@@ -26,10 +26,6 @@ std::int64_t value(const Word* s, const Slot& slot) {
   return slot.lo + static_cast<std::int64_t>(tioa::State(s, 0).code(slot));
 }
 
-std::string count(std::uint64_t n) {
-  return std::to_string(n);
-}
-
 checker::Trace single_state(const std::vector<Word>& state, std::uint32_t words) {
   checker::Trace trace;
   trace.steps.push_back({"", 0, std::vector<Word>(state.begin(), state.begin() + words)});
@@ -46,7 +42,7 @@ PropertyResult check_lemma_7_7(const VlConfig& c, const tioa::Automaton& layer, 
   const Matching m = match_family(c, layer, full, window, options, reading);
   PropertyResult r = checker::result_of("simulation", m.reach, generator);
   r.figures.emplace_back("covered", family_figure(c, m));
-  r.figures.emplace_back("Reach", count(m.reach.store.size()) + " states of " +
+  r.figures.emplace_back("Reach", std::to_string(m.reach.store.size()) + " states of " +
                                       every_placement(c, full).description());
   note_rmc_reading(c, window, reading, r);
   if (!m.reach.complete()) {
@@ -72,19 +68,19 @@ PropertyResult check_lemma_7_7(const VlConfig& c, const tioa::Automaton& layer, 
   const std::uint64_t size = m.family.size();
   for (std::size_t k = 0; k < readings.size(); ++k)
     r.figures.emplace_back(std::string("matched (") + to_string(readings[k]) + ")",
-                           count(size - unmatched[k]) + " of " + count(size));
-  r.figures.emplace_back("related pairs", count(pairs));
+                           std::to_string(size - unmatched[k]) + " of " + std::to_string(size));
+  r.figures.emplace_back("related pairs", std::to_string(pairs));
   const Slot loc = need_slot(full, "RW.loc[0]", "R_MC");
   for (std::size_t k = 0; k < readings.size(); ++k)
     if (k != chosen && first[k]) {
       const auto& x = m.family[*first[k]];
       const RmcRelation other(c, full, readings[k]);
-      r.notes.push_back(std::string(to_string(readings[k])) + " reading: " + count(unmatched[k]) +
-                        " family states have no related reachable state; the first has robot 0 "
-                        "at point " +
-                        std::to_string(value(x.data(), loc)) +
-                        " and the closest reachable state breaks " +
-                        joined(closest(other, m.reach, x.data()).second));
+      r.notes.push_back(
+          std::string(to_string(readings[k])) + " reading: " + std::to_string(unmatched[k]) +
+          " family states have no related reachable state; the first has robot 0 "
+          "at point " +
+          std::to_string(value(x.data(), loc)) + " and the closest reachable state breaks " +
+          joined(closest(other, m.reach, x.data()).second));
     }
   if (first[chosen]) {
     const auto& x = m.family[*first[chosen]];
@@ -93,18 +89,18 @@ PropertyResult check_lemma_7_7(const VlConfig& c, const tioa::Automaton& layer, 
     r.trace = single_state(x, full.words());
     r.trace_role = "counterexample";
     r.trace_kind = "invariant";
-    r.message = count(unmatched[chosen]) + " of the " + count(size) +
+    r.message = std::to_string(unmatched[chosen]) + " of the " + std::to_string(size) +
                 " ResetMC states of the family have no related reachable state; the state "
                 "shown is the first, and the closest reachable state breaks " +
                 joined(closest(relation, m.reach, x.data()).second);
     return r;
   }
   r.verdict = Verdict::holds;
-  r.message = "each of the " + count(size) +
+  r.message = "each of the " + std::to_string(size) +
               " ResetMC states of the family is related by R_MC to a reachable state of "
               "VLayer[MC] (" +
-              count(pairs) + " related pairs among " + count(m.reach.store.size()) +
-              " reachable states)";
+              std::to_string(pairs) + " related pairs among " +
+              std::to_string(m.reach.store.size()) + " reachable states)";
   return r;
 }
 

@@ -17,10 +17,6 @@ namespace {
 using checker::PropertyResult;
 using checker::Verdict;
 
-std::string count(std::uint64_t n) {
-  return std::to_string(n);
-}
-
 } // namespace
 
 PropertyResult check_theorem_7_5(const VlConfig& c, MWindow window, const ArbitraryStarts& starts,
@@ -46,7 +42,8 @@ PropertyResult check_theorem_7_5(const VlConfig& c, MWindow window, const Arbitr
   PropertyResult r = judge(direct, bound, "Theorem 7.5 (in LMC from delta + d + e + eps_sample on)",
                            u.exhaustive && complete && known.complete(), false, "");
   const auto time_of = [](const PropertyResult& p) {
-    return p.worst_time ? count(*p.worst_time) : std::string(checker::to_string(p.verdict));
+    return p.worst_time ? std::to_string(*p.worst_time)
+                        : std::string(checker::to_string(p.verdict));
   };
   r.figures.emplace_back("t1 (start -> L1MC, Lemma 7.3)", time_of(first));
   r.figures.emplace_back("t2 (L1MC -> LMC, Lemma 7.4)", time_of(second));
@@ -56,10 +53,10 @@ PropertyResult check_theorem_7_5(const VlConfig& c, MWindow window, const Arbitr
       *direct.worst_time > *first.worst_time + *second.worst_time) {
     r.verdict = Verdict::violated;
     r.message = "Lemma 3.4 fails: start -> LMC takes " + time_of(direct) +
-                " but t1 + t2 = " + count(*first.worst_time + *second.worst_time);
+                " but t1 + t2 = " + std::to_string(*first.worst_time + *second.worst_time);
   } else if (first.worst_time && second.worst_time) {
     r.notes.push_back("Lemma 3.4: t = " + time_of(direct) +
-                      " <= t1 + t2 = " + count(*first.worst_time + *second.worst_time));
+                      " <= t1 + t2 = " + std::to_string(*first.worst_time + *second.worst_time));
   }
   r.states = first.states + second.states + direct.states;
   r.edges = first.edges + second.edges + direct.edges;

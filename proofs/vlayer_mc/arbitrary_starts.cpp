@@ -10,10 +10,6 @@ namespace {
 
 using tioa::Word;
 
-std::string count(std::uint64_t n) {
-  return std::to_string(n);
-}
-
 // Reach(RW ‖ VW ‖ VBcast ‖ ClientFaults), its inputs from the nodes free: all of it when it
 // has at most `limit` states, else `samples` states at the ends of seeded random walks of up
 // to 8δ steps from its start states (every one reachable, not drawn uniformly).
@@ -117,8 +113,8 @@ UStarts u_starts(const VlConfig& c, const ArbitraryStarts& a,
           break;
       }
     }
-    u.covered =
-        "every start state of U(VLNodes) || R(RW || VW || VBcast): " + count(u.states.size());
+    u.covered = "every start state of U(VLNodes) || R(RW || VW || VBcast): " +
+                std::to_string(u.states.size());
     return u;
   }
   std::mt19937_64 random(a.seed);
@@ -132,14 +128,15 @@ UStarts u_starts(const VlConfig& c, const ArbitraryStarts& a,
   }
   char space[32];
   std::snprintf(space, sizeof space, "%.2Le", u.space);
-  u.covered = count(a.samples) + " start states drawn at random (seed " + count(a.seed) +
-              ") from U(VLNodes) || R(RW || VW || VBcast), " +
-              (reach.all ? "which has " + std::string(space) + " (" + count(u.environment_states) +
-                               " reachable states of the environment times every valuation of "
-                               "the nodes)"
-                         : "with the environment's state at the end of a random walk (it has "
-                           "more than " +
-                               count(a.environment_limit) + " reachable states)");
+  u.covered =
+      std::to_string(a.samples) + " start states drawn at random (seed " + std::to_string(a.seed) +
+      ") from U(VLNodes) || R(RW || VW || VBcast), " +
+      (reach.all ? "which has " + std::string(space) + " (" + std::to_string(u.environment_states) +
+                       " reachable states of the environment times every valuation of "
+                       "the nodes)"
+                 : "with the environment's state at the end of a random walk (it has "
+                   "more than " +
+                       std::to_string(a.environment_limit) + " reachable states)");
   return u;
 }
 

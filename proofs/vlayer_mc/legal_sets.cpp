@@ -27,10 +27,6 @@ const char* window_name(MWindow window) {
                                    : "clause (2) as printed: M_u ≠ ∅ only in (0, e + 2d + 2ε]";
 }
 
-std::string count(std::uint64_t n) {
-  return std::to_string(n);
-}
-
 // The trace to a state found by `ex`, whose last step leaves L1MC from an L1MC state.
 void closure_counterexample(PropertyResult& r, const tioa::SuccessorGenerator& generator,
                             const checker::Exploration& ex, const ClauseCheck& clauses,
@@ -47,8 +43,9 @@ void closure_counterexample(PropertyResult& r, const tioa::SuccessorGenerator& g
   }
   r.trace_kind = "closure-step";
   r.message = "the step " + r.trace->steps.back().action + " at time " +
-              count(r.trace->steps.back().time) + " leaves L1MC (breaks " + broken +
-              ") from an L1MC state " + from + "; trace: " + count(r.trace->length()) + " steps";
+              std::to_string(r.trace->steps.back().time) + " leaves L1MC (breaks " + broken +
+              ") from an L1MC state " + from + "; trace: " + std::to_string(r.trace->length()) +
+              " steps";
 }
 
 } // namespace
@@ -76,19 +73,19 @@ PropertyResult check_l1mc_closure(const VlConfig& c, const tioa::Automaton& syst
   const std::string reached = "reachable from " + system.start().description();
   if (ex.found) {
     closure_counterexample(r, generator, ex, clauses, reached);
-    r.figures.emplace_back("covered", "closure from the " + count(ex.expanded) +
+    r.figures.emplace_back("covered", "closure from the " + std::to_string(ex.expanded) +
                                           " L1MC states expanded before the first step out of "
                                           "L1MC (breadth-first, so the trace is shortest)");
   } else if (!ex.complete()) {
     mark_incomplete(r, ex, "no step out of L1MC in the states covered");
-    r.figures.emplace_back("covered", "closure from " + count(ex.expanded) + " L1MC states " +
-                                          reached + " (stopped on a limit)");
+    r.figures.emplace_back("covered", "closure from " + std::to_string(ex.expanded) +
+                                          " L1MC states " + reached + " (stopped on a limit)");
   } else {
     r.verdict = Verdict::holds;
-    r.message = "every step and tick from each of the " + count(ex.expanded) +
+    r.message = "every step and tick from each of the " + std::to_string(ex.expanded) +
                 " L1MC states reachable from the start stays in L1MC";
     r.figures.emplace_back("covered", "closure from every L1MC state " + reached + " (" +
-                                          count(ex.expanded) +
+                                          std::to_string(ex.expanded) +
                                           " states), not from all of L1MC: its valuations are "
                                           "too many to enumerate");
   }
@@ -158,8 +155,9 @@ PropertyResult check_reset_in_l1mc(const VlConfig& c, const tioa::Automaton& sys
     }
   });
 
-  r.figures.emplace_back("covered", "the " + count(ex.store.size()) + " states reachable from " +
-                                        system.start().description() + " (" + count(reached_reset) +
+  r.figures.emplace_back("covered", "the " + std::to_string(ex.store.size()) +
+                                        " states reachable from " + system.start().description() +
+                                        " (" + std::to_string(reached_reset) +
                                         " of them ResetMC) and the " + describe_reset_family(c));
   if (ex.found || family_bad) {
     r.verdict = Verdict::violated;
@@ -177,8 +175,8 @@ PropertyResult check_reset_in_l1mc(const VlConfig& c, const tioa::Automaton& sys
     mark_incomplete(r, ex, "every ResetMC state covered is in L1MC");
   } else {
     r.verdict = Verdict::holds;
-    r.message = "every ResetMC state covered is in L1MC: " + count(reached_reset) + " reachable, " +
-                count(family_reset) + " built directly";
+    r.message = "every ResetMC state covered is in L1MC: " + std::to_string(reached_reset) +
+                " reachable, " + std::to_string(family_reset) + " built directly";
     if (first_outside) {
       r.trace = checker::trace_to(generator, ex, *first_outside);
       r.trace_role = "witness";
@@ -190,14 +188,14 @@ PropertyResult check_reset_in_l1mc(const VlConfig& c, const tioa::Automaton& sys
     }
   }
   if (family_other > 0)
-    r.notes.push_back(count(family_other) +
+    r.notes.push_back(std::to_string(family_other) +
                       " states of the family break Def 7.2 (2)-(5) and were not counted");
   r.notes.push_back("ResetMC ⊆ L1MC is Def 7.2(1): checked that the predicates agree, and "
                     "counted the states meeting (2)-(5) but not (1)");
   r.notes.push_back(window_name(window));
-  r.figures.emplace_back("reset states reached", count(reached_reset));
-  r.figures.emplace_back("reset states built", count(family_reset));
-  r.figures.emplace_back("(2)-(5) without (1)", count(reached_outside + family_outside));
+  r.figures.emplace_back("reset states reached", std::to_string(reached_reset));
+  r.figures.emplace_back("reset states built", std::to_string(family_reset));
+  r.figures.emplace_back("(2)-(5) without (1)", std::to_string(reached_outside + family_outside));
   note_round_length(c, r);
   return r;
 }
@@ -213,13 +211,14 @@ PropertyResult check_lmc_closure(const VlConfig& c, const tioa::Automaton& layer
   const tioa::SuccessorGenerator generator(from);
 
   PropertyResult r = checker::result_of("legal-set", ex, generator);
-  r.figures.emplace_back(
-      "covered", "LMC from the " + describe_reset_family(c) +
-                     ", each with every combination of failed nodes (" + count(lmc.family_size()) +
-                     " states): every state reachable from them, as " + count(ex.store.size()) +
-                     " classes (D29); closed by construction under the steps "
-                     "and ticks explored; checked: each is in L1MC and has "
-                     "a successor");
+  r.figures.emplace_back("covered", "LMC from the " + describe_reset_family(c) +
+                                        ", each with every combination of failed nodes (" +
+                                        std::to_string(lmc.family_size()) +
+                                        " states): every state reachable from them, as " +
+                                        std::to_string(ex.store.size()) +
+                                        " classes (D29); closed by construction under the steps "
+                                        "and ticks explored; checked: each is in L1MC and has "
+                                        "a successor");
   const auto class_trace = [&](checker::StateId id) {
     const std::vector<Word> wanted = lmc.representative(tioa::State(ex.store.state(id), 0));
     checker::ExploreHooks hooks;
@@ -249,7 +248,7 @@ PropertyResult check_lmc_closure(const VlConfig& c, const tioa::Automaton& layer
     mark_incomplete(r, ex, "every LMC state covered is in L1MC");
   } else {
     r.verdict = Verdict::holds;
-    r.message = "LMC (" + count(ex.store.size()) +
+    r.message = "LMC (" + std::to_string(ex.store.size()) +
                 " classes) is closed under steps and ticks, lies inside L1MC, and never stops";
   }
   r.notes.push_back(window_name(window));

@@ -11,10 +11,6 @@ using checker::PropertyResult;
 using checker::Verdict;
 using tioa::Word;
 
-std::string count(std::uint64_t n) {
-  return std::to_string(n);
-}
-
 } // namespace
 
 StateList reached_where(const tioa::Automaton& system, const tioa::StatePredicate& keep,
@@ -38,15 +34,15 @@ const char* const lmc_measure_note =
     "cycle that never gets there, is reported as not confirmed, not as a counterexample";
 
 std::string describe_known(const KnownLmc& known) {
-  return count(known.size()) + " classes (D29) of the states reachable from " +
-         count(known.family_size()) +
+  return std::to_string(known.size()) + " classes (D29) of the states reachable from " +
+         std::to_string(known.family_size()) +
          " ResetMC states (the reset family with every combination of failed nodes)" +
          (known.complete() ? "" : ", stopped on a limit");
 }
 
 PropertyResult judge(PropertyResult m, std::uint64_t bound, const std::string& what,
                      bool exhaustive, bool exact, const std::string& detail) {
-  m.figures.emplace_back("bound", count(bound) + " " + m.time_unit);
+  m.figures.emplace_back("bound", std::to_string(bound) + " " + m.time_unit);
   if (m.verdict == Verdict::violated && !exact) {
     // A cycle that never meets the settled states: not a counterexample, since LMC is
     // only known in part.
@@ -62,9 +58,9 @@ PropertyResult judge(PropertyResult m, std::uint64_t bound, const std::string& w
     return m;
   }
   const std::uint64_t worst = m.worst_time.value_or(0);
-  m.figures.emplace_back("measured", count(worst) + " " + m.time_unit);
-  const std::string measured = "measured worst time " + count(worst) + " " + m.time_unit +
-                               " against the bound " + count(bound);
+  m.figures.emplace_back("measured", std::to_string(worst) + " " + m.time_unit);
+  const std::string measured = "measured worst time " + std::to_string(worst) + " " + m.time_unit +
+                               " against the bound " + std::to_string(bound);
   if (worst > bound) {
     m.trace_role = exact ? "counterexample" : "witness";
     m.verdict = exact ? Verdict::violated : Verdict::incomplete;
