@@ -3,11 +3,6 @@
 #include <algorithm>
 #include <charconv>
 
-#include "catalogue/fischer.hpp"
-#include "catalogue/mc_round.hpp"
-#include "catalogue/path_reservation.hpp"
-#include "catalogue/token_ring.hpp"
-#include "catalogue/vlayer_mc.hpp"
 #include "support/rational.hpp"
 #include "support/text.hpp"
 
@@ -63,19 +58,24 @@ std::string ParamSpec::range() const {
   return std::string(lo_open ? "(" : "[") + lo.text() + ", " + hi.text() + (hi_open ? ")" : "]");
 }
 
-const std::vector<ModelDefinition>& all_models() {
-  static const std::vector<ModelDefinition> models{token_ring_definition(), fischer_definition(),
-                                                   mc_round_definition(), vlayer_mc_definition(),
-                                                   path_reservation_definition()};
-  return models;
+Catalogue& Catalogue::add(ModelDefinition model) {
+  if (model.name.empty())
+    throw std::invalid_argument("a model needs a name");
+  if (!model.build)
+    throw std::invalid_argument("model '" + model.name + "' has no build function");
+  for (const auto& m : models_)
+    if (m.name == model.name)
+      throw std::invalid_argument("two models named '" + model.name + "'");
+  models_.push_back(std::move(model));
+  return *this;
 }
 
-const ModelDefinition& find_model(const std::string& name) {
-  for (const auto& m : all_models())
+const ModelDefinition& Catalogue::find(const std::string& name) const {
+  for (const auto& m : models_)
     if (m.name == name)
       return m;
   std::string known;
-  for (const auto& m : all_models())
+  for (const auto& m : models_)
     known += (known.empty() ? "" : ", ") + m.name;
   throw UsageError("unknown model '" + name + "' (known: " + known + ")");
 }

@@ -1,13 +1,18 @@
 #pragma once
-// The built-in models: their names, parameters (with defaults and ranges), properties,
-// and the instances the default suite checks.
+// A catalogue of models: each with its name, parameters (with defaults and ranges),
+// properties, the instances its suite checks and, optionally, a picture of its states.
+// tioa-check fills one with the built-in models (catalogue/builtin.hpp); a program of its
+// own fills one with its models and hands it to cli::run (cli/app.hpp).
 
 #include <functional>
 #include <map>
 #include <optional>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "catalogue/param_value.hpp"
 #include "checker/property.hpp"
@@ -58,6 +63,16 @@ struct SuiteEntry {
   checker::Verdict expected;
 };
 
+// The JSON of the reports (cli/report_json.hpp): keys in the order written.
+using Json = nlohmann::ordered_json;
+
+// A picture of one state for the HTML report (--html): writes an inline <svg> to `out`.
+// `params` is the report's "params" object (parameter name -> value), `state` a trace
+// step's "state" object (variable name -> value), `id` makes the picture's element ids
+// unique on the page.
+using Picture = std::function<void(std::ostream& out, const Json& params, const Json& state,
+                                   const std::string& id)>;
+
 struct ModelDefinition {
   std::string name;
   std::string description;
@@ -67,6 +82,8 @@ struct ModelDefinition {
   std::function<std::optional<std::string>(const ParamValues&)> check_params;
   std::function<ModelInstance(const ParamValues&)> build;
   std::vector<SuiteEntry> suite;
+  // The picture of a state in HTML reports; none: a table of the variables.
+  Picture picture = {};
 };
 
 // Bad input from a user: an unknown model, parameter or property, a malformed value.
@@ -75,8 +92,21 @@ public:
   explicit UsageError(const std::string& what) : std::runtime_error(what) {}
 };
 
-const std::vector<ModelDefinition>& all_models();
-const ModelDefinition& find_model(const std::string& name); // throws UsageError
+// The models a program offers, in the order added (list and suite keep it).
+class Catalogue {
+public:
+  // Throws std::invalid_argument when the name is empty or already taken, or `build` is
+  // missing. References to the models stay valid until the next add.
+  Catalogue& add(ModelDefinition model);
+  const ModelDefinition& find(const std::string& name) const; // throws UsageError
+  const std::vector<ModelDefinition>& models() const { return models_; }
+  auto begin() const { return models_.begin(); }
+  auto end() const { return models_.end(); }
+  bool empty() const { return models_.empty(); }
+
+private:
+  std::vector<ModelDefinition> models_;
+};
 
 // Defaults overridden by "name=value" settings; every value parsed and range-checked.
 ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::string>& settings);

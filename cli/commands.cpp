@@ -20,8 +20,8 @@ struct Built {
   catalogue::ModelInstance instance;
 };
 
-Built build(const ModelRequest& request) {
-  const catalogue::ModelDefinition& definition = catalogue::find_model(request.model);
+Built build(const catalogue::Catalogue& models, const ModelRequest& request) {
+  const catalogue::ModelDefinition& definition = models.find(request.model);
   catalogue::ParamValues values = catalogue::resolve_params(definition, request.param_settings);
   catalogue::ModelInstance instance = definition.build(values);
   return {&definition, std::move(values), std::move(instance)};
@@ -38,8 +38,8 @@ ModelRun start_run(const Built& built, const tioa::Automaton& system) {
 
 // Prints the report the settings ask for, writes the JUnit file and the HTML page, returns
 // the exit code.
-int report(const ModelRun& run, const RunSettings& settings, std::optional<std::ofstream>& junit,
-           std::optional<std::ofstream>& html) {
+int report(const ModelRun& run, const catalogue::Picture& picture, const RunSettings& settings,
+           std::optional<std::ofstream>& junit, std::optional<std::ofstream>& html) {
   if (settings.json)
     print_json(run_json(run, settings.trace != TraceMode::none));
   else
@@ -51,7 +51,7 @@ int report(const ModelRun& run, const RunSettings& settings, std::optional<std::
       throw catalogue::UsageError("cannot write the report file '" + settings.junit_path + "'");
   }
   if (html) {
-    write_html(*html, run_json(run, true));
+    write_html(*html, run_json(run, true), picture);
     html->close();
     if (!*html)
       throw catalogue::UsageError("cannot write the HTML file '" + settings.html_path + "'");
@@ -61,8 +61,9 @@ int report(const ModelRun& run, const RunSettings& settings, std::optional<std::
 
 } // namespace
 
-int command_check(const ModelRequest& request, const RunSettings& settings) {
-  const Built built = build(request);
+int command_check(const catalogue::Catalogue& models, const ModelRequest& request,
+                  const RunSettings& settings) {
+  const Built built = build(models, request);
   const auto properties = select_properties(built.instance, request.model, request.properties);
   auto junit = open_report_file(settings.junit_path);
   auto html = open_report_file(settings.html_path);
@@ -70,14 +71,14 @@ int command_check(const ModelRequest& request, const RunSettings& settings) {
   const checker::ExploreOptions options = explore_options(settings);
   for (const checker::Property* property : properties)
     run.results.push_back(checker::run_property(built.instance.system, *property, options));
-  return report(run, settings, junit, html);
+  return report(run, built.definition->picture, settings, junit, html);
 }
 
-int command_explore(const ModelRequest& request, const std::string& from,
-                    const RunSettings& settings) {
+int command_explore(const catalogue::Catalogue& models, const ModelRequest& request,
+                    const std::string& from, const RunSettings& settings) {
   if (from != "arbitrary" && from != "start")
     throw catalogue::UsageError("--from must be 'arbitrary' or 'start', not '" + from + "'");
-  const Built built = build(request);
+  const Built built = build(models, request);
   std::vector<const checker::Property*> properties;
   for (const checker::Property* p :
        select_properties(built.instance, request.model, request.properties)) {
@@ -108,7 +109,7 @@ int command_explore(const ModelRequest& request, const std::string& from,
   for (const checker::Property* property : properties)
     run.results.push_back(checker::run_property(system, *property, options));
   run.results.push_back(checker::run_property(system, no_deadlock, options));
-  return report(run, settings, junit, html);
+  return report(run, built.definition->picture, settings, junit, html);
 }
 
 } // namespace cli

@@ -13,9 +13,9 @@ namespace cli {
 
 namespace {
 
-Json list_json() {
+Json list_json(const catalogue::Catalogue& catalogue) {
   Json models = Json::array();
-  for (const auto& def : catalogue::all_models()) {
+  for (const auto& def : catalogue) {
     Json params = Json::array();
     for (const auto& p : def.params) {
       const bool choice = p.kind == catalogue::ParamKind::choice;
@@ -42,9 +42,9 @@ Json list_json() {
   return Json{{"models", std::move(models)}};
 }
 
-void print_list_text() {
+void print_list_text(const catalogue::Catalogue& catalogue) {
   bool first = true;
-  for (const auto& def : catalogue::all_models()) {
+  for (const auto& def : catalogue) {
     if (!first)
       std::cout << '\n';
     first = false;
@@ -83,11 +83,11 @@ void print_list_text() {
 
 } // namespace
 
-int command_list(bool json) {
+int command_list(const catalogue::Catalogue& models, bool json) {
   if (json)
-    print_json(list_json());
+    print_json(list_json(models));
   else
-    print_list_text();
+    print_list_text(models);
   return all_hold;
 }
 

@@ -3,9 +3,7 @@
 #include <string>
 
 #include "cli/html_text.hpp"
-#include "cli/render_path_reservation.hpp"
 #include "cli/render_table.hpp"
-#include "cli/render_vlayer.hpp"
 
 namespace cli {
 
@@ -93,8 +91,8 @@ std::string params_text(const Json& params) {
   return out;
 }
 
-void write_frame(std::ostream& out, const Json& report, const Json& trace,
-                 const std::string& trace_id, std::size_t index) {
+void write_frame(std::ostream& out, const Json& report, const catalogue::Picture& picture,
+                 const Json& trace, const std::string& trace_id, std::size_t index) {
   const Json& steps = trace["steps"];
   const Json& step = steps[index];
   const bool loop_start = trace["loop_start"].is_number() && trace["loop_start"] == index;
@@ -113,13 +111,8 @@ void write_frame(std::ostream& out, const Json& report, const Json& trace,
   out << "</h3>\n";
   const Json* previous = index == 0 ? nullptr : &steps[index - 1]["state"];
   const std::string picture_id = trace_id + "-" + std::to_string(index);
-  const bool vlayer = report["model"] == "vlayer-mc";
-  const bool path_reservation = report["model"] == "path-reservation";
-  if (vlayer || path_reservation) {
-    if (vlayer)
-      write_vlayer_picture(out, report["params"], step["state"], picture_id);
-    else
-      write_path_reservation_picture(out, report["params"], step["state"], picture_id);
+  if (picture) {
+    picture(out, report["params"], step["state"], picture_id);
     out << "<details><summary>every variable</summary>\n";
     write_state_table(out, step["state"], previous);
     out << "</details>\n";
@@ -129,8 +122,8 @@ void write_frame(std::ostream& out, const Json& report, const Json& trace,
   out << "</section>\n";
 }
 
-void write_trace(std::ostream& out, const Json& report, const Json& trace,
-                 const std::string& trace_id) {
+void write_trace(std::ostream& out, const Json& report, const catalogue::Picture& picture,
+                 const Json& trace, const std::string& trace_id) {
   const Json& steps = trace["steps"];
   out << "<p>" << html_text(scalar_text(trace["role"])) << " ("
       << html_text(scalar_text(trace["kind"])) << "), " << trace["length"].dump() << " steps, "
@@ -141,13 +134,13 @@ void write_trace(std::ostream& out, const Json& report, const Json& trace,
          "<button class=\"all\">show all</button> <input class=\"slider\" type=\"range\" "
          "min=\"0\" max=\"0\" value=\"0\"/> <span class=\"status\"></span></p>\n";
   for (std::size_t i = 0; i < steps.size(); ++i)
-    write_frame(out, report, trace, trace_id, i);
+    write_frame(out, report, picture, trace, trace_id, i);
   out << "</div>\n";
 }
 
 } // namespace
 
-void write_html(std::ostream& out, const Json& report) {
+void write_html(std::ostream& out, const Json& report, const catalogue::Picture& picture) {
   const std::string model = scalar_text(report["model"]);
   const std::string params = params_text(report["params"]);
   out << "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" lang=\"en\">\n<head>\n"
@@ -179,7 +172,7 @@ void write_html(std::ostream& out, const Json& report) {
     out << "<h2>" << html_text(scalar_text(property["name"])) << ": "
         << html_text(scalar_text(property["verdict"])) << "</h2>\n<p>"
         << html_text(scalar_text(property["description"])) << "</p>\n";
-    write_trace(out, report, property["trace"], "p" + std::to_string(number));
+    write_trace(out, report, picture, property["trace"], "p" + std::to_string(number));
   }
   if (!any_trace)
     out << "<p>No property has a trace to show.</p>\n";

@@ -3,17 +3,19 @@
 // parameters, each property and its verdict; then, for each property with a trace, its
 // frames in order, each headed by the action that led to it and its time, with step
 // controls (a few lines of inline script; without script every frame shows, stacked).
-// The picture of a frame is the model's own where there is one (vlayer-mc) and otherwise a
-// table of the variables, the changed ones highlighted. No external resource: inline CSS,
+// The picture of a frame is the model's own where it has one (ModelDefinition::picture,
+// with the table of every variable folded underneath) and otherwise a table of the
+// variables, the changed ones highlighted. No external resource: inline CSS,
 // inline SVG, inline script. The page is also well-formed XML.
 
 #include <ostream>
 
+#include "catalogue/registry.hpp"
 #include "cli/report_json.hpp"
 
 namespace cli {
 
-// `report` is run_json(run, true) (report_json.hpp).
-void write_html(std::ostream& out, const Json& report);
+// `report` is run_json(run, true) (report_json.hpp); `picture` the model's (may be empty).
+void write_html(std::ostream& out, const Json& report, const catalogue::Picture& picture = {});
 
 } // namespace cli

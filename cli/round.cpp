@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <sstream>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -240,6 +242,28 @@ int command_round(const RoundRequest& request) {
   else
     print_text(*config, outcome);
   return all_hold;
+}
+
+Command round_command() {
+  return {"round",
+          "the motion-coordination algorithm at round level on one configuration (JSON): the "
+          "next round's robots per region, or every round to the fixed point",
+          [](CLI::App& command) -> std::function<int()> {
+            auto request = std::make_shared<RoundRequest>();
+            command.add_option("--config", request->config, "the configuration file ('-': stdin)")
+                ->type_name("FILE")
+                ->required();
+            command.add_flag("--json", request->json, "print one JSON object on stdout");
+            command.add_flag("--to-fixpoint", request->to_fixpoint,
+                             "every round to the fixed point, with T_out and T_stab");
+            command
+                .add_option("--max-rounds", request->max_rounds,
+                            "with --to-fixpoint: give up (exit 3) when the counts still change in "
+                            "this round (default 100000)")
+                ->type_name("N")
+                ->check(whole_number());
+            return [request] { return command_round(*request); };
+          }};
 }
 
 } // namespace cli

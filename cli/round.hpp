@@ -7,6 +7,7 @@
 #include <istream>
 #include <string>
 
+#include "cli/app.hpp"
 #include "models/mc/round.hpp"
 
 namespace cli {
@@ -31,5 +32,8 @@ RoundConfig read_round_config(std::istream& in, const std::string& source);
 // Exit codes: 0 done; 3 no fixed point within max_rounds (one line on stderr). Throws
 // catalogue::UsageError on a bad configuration.
 int command_round(const RoundRequest& request);
+
+// The command `round` for cli::run: its options, then command_round.
+Command round_command();
 
 } // namespace cli

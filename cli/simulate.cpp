@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -260,60 +261,56 @@ void print_json(const Checked& c, const std::vector<mc::SimulationResult>& resul
 
 } // namespace
 
-CLI::App* add_simulate_command(CLI::App& app, SimulateRequest& request) {
-  CLI::App* command = app.add_subcommand(
-      "simulate", "the simulation of seed 002 §VII at round level: T_out and T_stab for m in "
-                  "a range and the curves C1, C2, C3; the claim about C2; CSV and SVG figures");
+void add_simulate_options(CLI::App& command, SimulateRequest& request) {
   command
-      ->add_option("--out", request.out,
-                   "write simulation.csv, fig9.svg and fig8-<curve>-m<m>.svg into DIR "
-                   "(created if missing); without it no file is written")
+      .add_option("--out", request.out,
+                  "write simulation.csv, fig9.svg and fig8-<curve>-m<m>.svg into DIR "
+                  "(created if missing); without it no file is written")
       ->type_name("DIR");
-  command->add_option("--m-from", request.m_from, "the smallest grid side m (default 10)")
+  command.add_option("--m-from", request.m_from, "the smallest grid side m (default 10)")
       ->type_name("M")
       ->check(CLI::Range(1, max_side));
-  command->add_option("--m-to", request.m_to, "the largest grid side m (default 20)")
+  command.add_option("--m-to", request.m_to, "the largest grid side m (default 20)")
       ->type_name("M")
       ->check(CLI::Range(1, max_side));
   command
-      ->add_option("--curves", request.curves,
-                   "the curves, a comma-separated list of C1, C2, C3 (default all three)")
+      .add_option("--curves", request.curves,
+                  "the curves, a comma-separated list of C1, C2, C3 (default all three)")
       ->type_name("LIST")
       ->delimiter(',')
       ->allow_extra_args(false);
-  command->add_option("--robots", request.robots, "robots, all starting in region (m-1, m-1)")
+  command.add_option("--robots", request.robots, "robots, all starting in region (m-1, m-1)")
       ->type_name("N")
       ->check(CLI::Range(std::int64_t{1}, std::int64_t{1'000'000'000'000}));
-  command->add_option("--e", request.e, "the safe number e (k of seed 000), >= 1 (default 5)")
+  command.add_option("--e", request.e, "the safe number e (k of seed 000), >= 1 (default 5)")
       ->type_name("N")
       ->check(CLI::Range(std::int64_t{1}, std::int64_t{1'000'000'000'000}));
-  command->add_option("--rho2", request.rho2, "rho2 in (0, 1), exact (default 9/10)")
+  command.add_option("--rho2", request.rho2, "rho2 in (0, 1), exact (default 9/10)")
       ->type_name("P/Q");
   command
-      ->add_option("--sigma", request.sigma,
-                   "the quantum sigma of q, in units of the region side b = 1 (default 1/4)")
+      .add_option("--sigma", request.sigma,
+                  "the quantum sigma of q, in units of the region side b = 1 (default 1/4)")
       ->type_name("P/Q");
-  command->add_option("--nbh", request.nbh, "the neighbourhood: 4 (seed 002, default) or 8")
+  command.add_option("--nbh", request.nbh, "the neighbourhood: 4 (seed 002, default) or 8")
       ->type_name("4|8")
       ->check(CLI::IsMember({4, 8}));
   command
-      ->add_option("--fig8-m", request.fig8_m,
-                   "the m of the Fig. 8 pictures (default 10 if in the range, else --m-from)")
+      .add_option("--fig8-m", request.fig8_m,
+                  "the m of the Fig. 8 pictures (default 10 if in the range, else --m-from)")
       ->type_name("M")
       ->check(CLI::Range(1, max_side));
   command
-      ->add_option("--dominance", request.dominance,
-                   "the claim holds when T_out >= SHARE * T_stab for C2 at every m "
-                   "(default 9/10)")
+      .add_option("--dominance", request.dominance,
+                  "the claim holds when T_out >= SHARE * T_stab for C2 at every m "
+                  "(default 9/10)")
       ->type_name("SHARE");
   command
-      ->add_option("--max-rounds", request.max_rounds,
-                   "give up (exit 3) when a run's counts still change in this round "
-                   "(default 100000)")
+      .add_option("--max-rounds", request.max_rounds,
+                  "give up (exit 3) when a run's counts still change in this round "
+                  "(default 100000)")
       ->type_name("N")
       ->check(CLI::Range(std::int64_t{1}, std::int64_t{1'000'000'000}));
-  command->add_flag("--json", request.json, "print one JSON object on stdout");
-  return command;
+  command.add_flag("--json", request.json, "print one JSON object on stdout");
 }
 
 int command_simulate(const SimulateRequest& request) {
@@ -343,6 +340,17 @@ int command_simulate(const SimulateRequest& request) {
   else
     print_text(c, results, claim, files);
   return claim && !claim->holds ? some_violated : all_hold;
+}
+
+Command simulate_command() {
+  return {"simulate",
+          "the simulation of seed 002 §VII at round level: T_out and T_stab for m in a range "
+          "and the curves C1, C2, C3; the claim about C2; CSV and SVG figures",
+          [](CLI::App& command) -> std::function<int()> {
+            auto request = std::make_shared<SimulateRequest>();
+            add_simulate_options(command, *request);
+            return [request] { return command_simulate(*request); };
+          }};
 }
 
 } // namespace cli

@@ -10,6 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/app.hpp"
+
 namespace cli {
 
 struct SimulateRequest {
@@ -28,12 +30,15 @@ struct SimulateRequest {
   bool json = false;
 };
 
-// Registers the subcommand and its options on `app`.
-CLI::App* add_simulate_command(CLI::App& app, SimulateRequest& request);
+// Declares the options of the subcommand `command` into `request`.
+void add_simulate_options(CLI::App& command, SimulateRequest& request);
 
 // Exit codes: 0 done (the claim holds, or C2 is not in the sweep); 1 the claim about C2 does
 // not hold; 3 a run did not reach its fixed point within --max-rounds (one line on stderr).
 // Throws catalogue::UsageError on bad values (one line).
 int command_simulate(const SimulateRequest& request);
+
+// The command `simulate` for cli::run: its options, then command_simulate.
+Command simulate_command();
 
 } // namespace cli

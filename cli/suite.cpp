@@ -97,14 +97,15 @@ Json suite_json(const std::vector<SuiteRow>& rows, bool all_as_expected) {
 
 } // namespace
 
-int command_suite(const RunSettings& settings, const std::vector<std::string>& only) {
+int command_suite(const catalogue::Catalogue& models, const RunSettings& settings,
+                  const std::vector<std::string>& only) {
   const auto started = std::chrono::steady_clock::now();
   for (const std::string& name : only)
-    catalogue::find_model(name); // an unknown model is a usage error, before anything runs
+    models.find(name); // an unknown model is a usage error, before anything runs
   // Resolve every entry first: a bad entry is reported before anything runs.
   std::vector<SuiteRow> rows;
   Columns columns;
-  for (const auto& def : catalogue::all_models())
+  for (const auto& def : models)
     for (const auto& entry : def.suite) {
       if (!only.empty() && std::find(only.begin(), only.end(), def.name) == only.end())
         continue;

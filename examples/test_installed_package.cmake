@@ -4,7 +4,8 @@
 # 1. installs the built project from BUILD_DIR into WORK_DIR/prefix;
 # 2. configures and builds SOURCE_DIR (examples/heartbeat) standalone against that prefix,
 #    checking that find_package(tioa) found the package there and nowhere else;
-# 3. runs the example, which exits 0 when every verdict is the expected one.
+# 3. checks the program it builds with check_heartbeat.cmake (its commands, exit codes and
+#    reports), as example-heartbeat does for the in-tree build.
 
 foreach(var BUILD_DIR CONFIG SOURCE_DIR WORK_DIR GENERATOR)
   if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
@@ -65,5 +66,6 @@ endforeach()
 if(NOT program)
   message(FATAL_ERROR "the standalone build produced no heartbeat executable in ${build}")
 endif()
-run("run ${program}" ${program})
-message("${output}")
+set(PROGRAM ${program})
+set(WORK_DIR ${WORK_DIR}/out)
+include(${CMAKE_CURRENT_LIST_DIR}/check_heartbeat.cmake)

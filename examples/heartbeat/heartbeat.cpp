@@ -1,23 +1,26 @@
-// A heartbeat failure detector written against the installed tioa library, the way code
-// outside this repository uses it. docs/examples.md walks through it line by line.
+// A heartbeat failure detector written against the installed tioa package, the way code
+// outside this repository uses it: the automata and their properties, registered as one
+// model, and the command line of tioa-check around them (list, check, explore, suite; text,
+// JSON, JUnit and HTML reports) from cli::run. docs/examples.md walks through it.
 //
 //   sender    output beat         clock since (0..P)   deadline: a beat is due at since = P
 //   receiver  input beat          clock heard (0..T+1) alive while it heard a beat within T
 //             output suspect      urgent once heard > T
 //
 // System: Fail(sender) || receiver; the environment drives fail_sender and restart_sender.
-// The program runs four checks and exits 0 only if each gives the expected verdict.
 
-#include <cstdint>
-#include <iomanip>
-#include <iostream>
+#include <optional>
 #include <string>
 
+#include "catalogue/registry.hpp"
 #include "checker/checks.hpp"
-#include "checker/trace.hpp"
+#include "cli/app.hpp"
 #include "tioa/tioa.hpp"
 
-using checker::PropertyResult;
+using catalogue::ModelDefinition;
+using catalogue::ModelInstance;
+using catalogue::ParamValues;
+using checker::PropertyKind;
 using checker::Verdict;
 using tioa::Automaton;
 using tioa::Params;
@@ -54,105 +57,85 @@ Automaton receiver(int timeout) {
   return a;
 }
 
-// The system, with and without an arbitrary start for the sender, and its two properties.
-struct Heartbeat {
-  Automaton system;   // Fail(sender) || receiver, from their start states
-  Automaton anywhere; // U(Fail(sender)) || receiver: the sender starts in any state
-  tioa::StatePredicate no_false_suspicion = {}, consistent = {};
-};
-
-Heartbeat build(int period, int timeout) {
+// One instance: the system from its start states, and its three properties.
+ModelInstance build(int period, int timeout) {
   // §3.2: Fail adds the variable `failed` and the inputs fail_sender, restart_sender.
   const Automaton failing = tioa::Fail(sender(period));
-  // §3.1 composition (beat: the sender's output drives the receiver's input); §3.3 U.
-  Heartbeat h{.system = tioa::compose("heartbeat", {failing, receiver(timeout)}),
-              .anywhere = tioa::compose("heartbeat", {tioa::U(failing), receiver(timeout)})};
-  const auto since = tioa::find_variable<int>(h.system, "sender.since");
-  const auto heard = tioa::find_variable<int>(h.system, "receiver.heard");
-  const auto failed = tioa::find_variable<bool>(h.system, "sender.failed");
-  const auto alive = tioa::find_variable<bool>(h.system, "receiver.alive");
+  // §3.1 composition (beat: the sender's output drives the receiver's input); §3.3 U: the
+  // same system with the sender started in any state, for Def 3.5.
+  const Automaton system = tioa::compose("heartbeat", {failing, receiver(timeout)});
+  const Automaton anywhere = tioa::compose("heartbeat", {tioa::U(failing), receiver(timeout)});
+
+  const auto since = tioa::find_variable<int>(system, "sender.since");
+  const auto heard = tioa::find_variable<int>(system, "receiver.heard");
+  const auto failed = tioa::find_variable<bool>(system, "sender.failed");
+  const auto alive = tioa::find_variable<bool>(system, "receiver.alive");
   // The receiver suspects only a sender that failed, or restarted after the last beat it
   // heard (then heard > since).
-  h.no_false_suspicion = [=](const State& s) {
+  const tioa::StatePredicate no_false_suspicion = [=](const State& s) {
     return s[alive] || s[failed] || s[heard] > s[since];
   };
-  // L: the receiver's belief is consistent with the sender: it heard no beat the sender did
-  // not send (heard >= since) and suspects only after more than T quanta of silence.
-  // "alive exactly when the sender is up" is no legal set: the environment may fail the
-  // sender at any time and the receiver learns it only T quanta later, so that set is not
-  // closed under fail_sender (§3.1). L must allow a failed sender that is still trusted.
-  h.consistent = [=](const State& s) {
+  // L: the receiver heard no beat the sender did not send (heard >= since) and suspects
+  // only after more than T quanta of silence. ("Alive exactly when the sender is up" is no
+  // legal set: the environment may fail the sender at any time, §3.1.)
+  const tioa::StatePredicate consistent = [=](const State& s) {
     return s[heard] >= s[since] && (s[alive] || s[heard] > timeout);
   };
-  return h;
+
+  ModelInstance m{system, {}, "1 time unit"};
+  m.properties = {
+      {"no-false-suspicion",
+       "invariant: the receiver suspects only a failed or restarted sender",
+       PropertyKind::invariant,
+       no_false_suspicion,
+       "no false suspicion",
+       {},
+       ""},
+      {"consistent-closed",
+       "L = consistent belief is closed under every step (§3.1)",
+       PropertyKind::legal_set,
+       consistent,
+       "consistent belief",
+       {},
+       ""},
+      {"stabilisation",
+       "U(Fail(sender)) || receiver stabilises to L = consistent belief "
+       "(Def 3.5)",
+       PropertyKind::custom,
+       {},
+       "",
+       {},
+       "",
+       [=](const checker::ExploreOptions& options) {
+         return checker::check_stabilisation(anywhere, consistent, options);
+       }},
+  };
+  return m;
 }
 
-// Prints a trace, one state a line; false if it does not replay against the model.
-bool print_trace(const Automaton& system, const checker::Trace& trace) {
-  for (std::size_t i = 0; i < trace.steps.size(); ++i) {
-    const checker::TraceStep& step = trace.steps[i];
-    std::cout << "    t=" << step.time << "  " << std::left << std::setw(16)
-              << (step.action.empty() ? "(start)" : step.action);
-    for (const auto& [name, value] : checker::render_state(system.layout(), step.state.data()))
-      std::cout << "  " << name << "=" << value;
-    std::cout << (trace.loop_start == i ? "  <- loop starts" : "") << "\n";
-  }
-  std::string why;
-  const bool replays = checker::replay(tioa::SuccessorGenerator(system), trace, &why);
-  if (!replays)
-    std::cout << "    the trace does not replay: " << why << "\n";
-  return replays;
-}
-
-// Prints one verdict; true when it is the expected one.
-bool report(const std::string& title, const Automaton& system, const PropertyResult& r,
-            Verdict expected) {
-  bool ok = r.verdict == expected;
-  std::cout << "\n"
-            << title << "\n  verdict: " << checker::to_string(r.verdict) << " (expected "
-            << checker::to_string(expected) << ")" << (ok ? "" : "  <-- UNEXPECTED") << "\n  "
-            << r.message << "\n  explored " << r.states << " states, " << r.edges << " edges\n";
-  for (const std::string& note : r.notes)
-    std::cout << "  note: " << note << "\n";
-  if (r.trace) {
-    std::cout << "  " << r.trace_role << " (" << r.trace_kind << "):\n";
-    ok &= print_trace(system, *r.trace);
-  }
-  return ok;
+ModelDefinition heartbeat_definition() {
+  ModelDefinition d;
+  d.name = "heartbeat";
+  d.description = "a heartbeat failure detector: Fail(sender) || receiver (time: quanta)";
+  d.params = {{"P", 3, 1, 10, "the sender's period: a beat at least every P quanta"},
+              {"T", 3, 1, 10, "the receiver's timeout: it suspects after more than T quanta"}};
+  d.properties = {{"no-false-suspicion", "the receiver suspects only a failed or restarted sender"},
+                  {"consistent-closed", "L = consistent belief is a legal set (closure)"},
+                  {"stabilisation", "U(Fail(sender)) || receiver stabilises to L; worst time"}};
+  d.build = [](const ParamValues& p) {
+    return build(static_cast<int>(p.at("P").integer()), static_cast<int>(p.at("T").integer()));
+  };
+  d.suite = {{{}, "no-false-suspicion", Verdict::holds},
+             {{}, "consistent-closed", Verdict::holds},
+             {{}, "stabilisation", Verdict::holds},
+             {{{"T", 2}}, "no-false-suspicion", Verdict::violated}};
+  return d;
 }
 
 } // namespace
 
-int main() try {
-  constexpr int period = 3, timeout = 3, short_timeout = 2; // in quanta
-  const checker::ExploreOptions options;
-  const Heartbeat good = build(period, timeout), hasty = build(period, short_timeout);
-  std::cout << "heartbeat: P = " << period << ", T = " << timeout
-            << " (one quantum = 1 time unit)\n";
-
-  bool ok = report("(a) invariant: no false suspicion, T = P", good.system,
-                   checker::check_invariant(good.system, good.no_false_suspicion, options),
-                   Verdict::holds);
-  ok &= report("(b) legal set (§3.1): consistent belief is closed", good.system,
-               checker::check_legal_set(good.system, good.consistent, options), Verdict::holds);
-  // Def 3.5: Fail(sender) self-stabilises to L relative to the receiver, even though the
-  // environment may keep failing and restarting the sender.
-  const PropertyResult stab = checker::check_stabilisation(good.anywhere, good.consistent, options);
-  ok &= report("(c) stabilisation (Def 3.5): U(Fail(sender)) || receiver -> consistent belief",
-               good.anywhere, stab, Verdict::holds);
-  if (stab.worst_time) {
-    std::cout << "  worst-case stabilisation time: " << *stab.worst_time << " " << stab.time_unit
-              << " (expected " << period << ")\n";
-    ok &= *stab.worst_time == static_cast<std::uint64_t>(period);
-  }
-  ok &= report("(d) invariant: no false suspicion, T = " + std::to_string(short_timeout) + " < P",
-               hasty.system,
-               checker::check_invariant(hasty.system, hasty.no_false_suspicion, options),
-               Verdict::violated);
-
-  std::cout << "\n" << (ok ? "all verdicts as expected" : "UNEXPECTED VERDICT") << "\n";
-  return ok ? 0 : 1;
-} catch (const std::exception& e) {
-  std::cerr << "heartbeat: " << e.what() << "\n";
-  return 2;
+int main(int argc, char** argv) {
+  catalogue::Catalogue models;
+  models.add(heartbeat_definition());
+  return cli::run(argc, argv, models);
 }

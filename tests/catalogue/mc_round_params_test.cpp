@@ -2,6 +2,7 @@
 // choose what its lemma properties check: curve, family (standard or given), samples, seed.
 #include <catch2/catch.hpp>
 
+#include "catalogue/builtin.hpp"
 #include "catalogue/registry.hpp"
 
 using catalogue::ParamValue;
@@ -11,7 +12,7 @@ namespace {
 
 std::string usage_error(const std::vector<std::string>& settings) {
   try {
-    catalogue::resolve_params(catalogue::find_model("mc-round"), settings);
+    catalogue::resolve_params(catalogue::builtin_models().find("mc-round"), settings);
   } catch (const catalogue::UsageError& e) {
     return e.what();
   }
@@ -21,7 +22,7 @@ std::string usage_error(const std::vector<std::string>& settings) {
 // One property of mc-round built with the settings, run on `threads` threads.
 checker::PropertyResult run(const std::string& property, const std::vector<std::string>& settings,
                             unsigned threads = 1) {
-  const auto& def = catalogue::find_model("mc-round");
+  const auto& def = catalogue::builtin_models().find("mc-round");
   const catalogue::ModelInstance m = def.build(catalogue::resolve_params(def, settings));
   checker::ExploreOptions options;
   options.threads = threads;
@@ -53,7 +54,7 @@ TEST_CASE("choice parameters: a name from a list, kept as the name", "[models][r
   CHECK_THROWS_AS(line.rational(), std::logic_error);
   CHECK_FALSE(ParamValue(3).is_choice());
 
-  const auto& def = catalogue::find_model("mc-round");
+  const auto& def = catalogue::builtin_models().find("mc-round");
   const catalogue::ParamValues defaults = catalogue::resolve_params(def, {});
   CHECK(defaults.at("curve") == ParamValue::choice("line"));
   CHECK(defaults.at("family") == ParamValue::choice("standard"));
@@ -152,7 +153,7 @@ TEST_CASE("mc-round: family=given re-runs conference Lemma 2(2)'s counterexample
 
 TEST_CASE("mc-round: samples > 0 runs the seeded random search on every lemma property",
           "[mc][round][search]") {
-  const auto& def = catalogue::find_model("mc-round");
+  const auto& def = catalogue::builtin_models().find("mc-round");
   for (const auto& [name, description] : def.properties) {
     // Lemma 6.8 has no population to sample: samples sets its random starts (below).
     if (name.rfind("lemma-", 0) != 0 || name == "lemma-6.8")
@@ -206,7 +207,7 @@ TEST_CASE("mc-round: the fixed-point search holds on N samples, the same for eve
 }
 
 TEST_CASE("mc-round: the registered model builds and its suite entries hold", "[mc][round]") {
-  const auto& def = catalogue::find_model("mc-round");
+  const auto& def = catalogue::builtin_models().find("mc-round");
   const auto values = catalogue::resolve_params(def, {"rho2=1/2", "nbh=4"});
   CHECK(values.at("rho2").text() == "1/2");
   CHECK_THROWS_WITH(catalogue::resolve_params(def, {"rho2=1"}),

@@ -5,7 +5,9 @@
 #include <algorithm>
 
 #include <set>
+#include <stdexcept>
 
+#include "catalogue/builtin.hpp"
 #include "catalogue/registry.hpp"
 
 using catalogue::UsageError;
@@ -16,7 +18,7 @@ namespace {
 // The message of the UsageError that resolve_params throws, or a marker when none.
 std::string usage_error(const std::string& model, const std::vector<std::string>& settings) {
   try {
-    catalogue::resolve_params(catalogue::find_model(model), settings);
+    catalogue::resolve_params(catalogue::builtin_models().find(model), settings);
   } catch (const UsageError& e) {
     return e.what();
   }
@@ -27,14 +29,14 @@ std::string usage_error(const std::string& model, const std::vector<std::string>
 
 TEST_CASE("registry: every model builds with its defaults and lists its properties",
           "[models][registry]") {
-  const auto& all = catalogue::all_models();
+  const auto& all = catalogue::builtin_models().models();
   REQUIRE(all.size() >= 2);
   std::set<std::string> names;
   for (const auto& def : all) {
     INFO("model " << def.name);
     CHECK(names.insert(def.name).second); // names are unique
     CHECK_FALSE(def.description.empty());
-    CHECK(&catalogue::find_model(def.name) == &def);
+    CHECK(&catalogue::builtin_models().find(def.name) == &def);
     for (const auto& p : def.params) {
       if (p.kind == catalogue::ParamKind::choice) {
         CHECK(std::count(p.choices.begin(), p.choices.end(), p.default_value.text()) == 1);
@@ -66,7 +68,7 @@ TEST_CASE("registry: every model builds with its defaults and lists its properti
 }
 
 TEST_CASE("registry: every suite entry gives its expected verdict", "[models][registry][suite]") {
-  for (const auto& def : catalogue::all_models()) {
+  for (const auto& def : catalogue::builtin_models().models()) {
     CHECK_FALSE(def.suite.empty());
     for (const auto& entry : def.suite) {
       // The entry's values, on top of the defaults, go through the same checks as a user's.
@@ -96,9 +98,9 @@ TEST_CASE("registry: every suite entry gives its expected verdict", "[models][re
   }
 }
 
-TEST_CASE("registry: find_model names the known models when it fails", "[models][registry]") {
+TEST_CASE("registry: find names the known models when it fails", "[models][registry]") {
   try {
-    catalogue::find_model("fisher");
+    catalogue::builtin_models().find("fisher");
     FAIL("no UsageError");
   } catch (const UsageError& e) {
     CHECK(std::string(e.what()) == "unknown model 'fisher' (known: token-ring, fischer, mc-round, "
@@ -107,7 +109,7 @@ TEST_CASE("registry: find_model names the known models when it fails", "[models]
 }
 
 TEST_CASE("resolve_params: defaults and overrides", "[models][registry][params]") {
-  const auto& ring = catalogue::find_model("token-ring");
+  const auto& ring = catalogue::builtin_models().find("token-ring");
   CHECK(catalogue::resolve_params(ring, {}) == catalogue::ParamValues{{"N", 5}, {"K", 4}});
   CHECK(catalogue::resolve_params(ring, {"N=3"}) == catalogue::ParamValues{{"N", 3}, {"K", 4}});
   CHECK(catalogue::resolve_params(ring, {"K=2", "N=7"}) ==
@@ -116,7 +118,7 @@ TEST_CASE("resolve_params: defaults and overrides", "[models][registry][params]"
         catalogue::ParamValues{{"N", 4}, {"K", 4}});
   // The ends of each range are allowed.
   CHECK(catalogue::resolve_params(ring, {"N=2", "K=64"}).at("K") == 64);
-  const auto& fischer = catalogue::find_model("fischer");
+  const auto& fischer = catalogue::builtin_models().find("fischer");
   CHECK(catalogue::resolve_params(fischer, {}) ==
         catalogue::ParamValues{{"N", 3}, {"A", 1}, {"B", 2}});
   CHECK(catalogue::resolve_params(fischer, {"A=0", "B=0"}) ==
@@ -179,4 +181,30 @@ TEST_CASE("ParamValue: choices are ordered, so parameter sets can key a map",
   keyed[{{"scenario", a}}] = 1;
   keyed[{{"scenario", b}}] = 2;
   CHECK(keyed.size() == 2);
+}
+
+TEST_CASE("Catalogue: add refuses a model without a name, without build, or named twice",
+          "[models][registry]") {
+  catalogue::Catalogue models;
+  catalogue::ModelDefinition model;
+  CHECK_THROWS_AS(models.add(model), std::invalid_argument);
+  model.name = "m";
+  CHECK_THROWS_AS(models.add(model), std::invalid_argument);
+  model.build = [](const catalogue::ParamValues&) {
+    return catalogue::ModelInstance{tioa::Automaton("m"), {}, ""};
+  };
+  models.add(model);
+  CHECK_THROWS_AS(models.add(model), std::invalid_argument);
+  CHECK(models.models().size() == 1);
+  CHECK(&models.find("m") == &models.models().front());
+  CHECK_THROWS_WITH(models.find("n"), "unknown model 'n' (known: m)");
+}
+
+TEST_CASE("builtin_models: vlayer-mc and path-reservation bring their pictures",
+          "[models][registry]") {
+  for (const auto& def : catalogue::builtin_models()) {
+    INFO("model " << def.name);
+    CHECK(static_cast<bool>(def.picture) ==
+          (def.name == "vlayer-mc" || def.name == "path-reservation"));
+  }
 }

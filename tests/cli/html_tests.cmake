@@ -6,7 +6,7 @@
 # A page of a real vlayer-mc trace, written through the CLI's report and renderer (the
 # model has no property with a trace yet).
 add_executable(cli_html_vlayer_page html_vlayer_page.cpp)
-target_link_libraries(cli_html_vlayer_page PRIVATE app tioa_warnings)
+target_link_libraries(cli_html_vlayer_page PRIVATE app builtin tioa_warnings)
 
 # html_test(NAME EXIT code PAGE file [FRAMES n] [CHROMIUM] COMMAND words... [PAGE_REGEX regex...])
 function(html_test name)
@@ -81,7 +81,7 @@ foreach(variant IN ITEMS "" _chromium)
                        "VSA 0: clock 0, M = {0 at \\(0,2\\)}</li>")
 endforeach()
 
-# path-reservation: each frame a picture of the plane (cli/render_path_reservation.cpp).
+# path-reservation: each frame a picture of the plane (catalogue/path_reservation_picture.cpp).
 # The variant that releases before it reserves lets the two robots of `crossing` meet on
 # cell (2,2); the frame count is left open while the model is young. On `cycle` the paper's
 # protocol ends with every robot halted by a risk-cycle exception (a witness, exit 0).

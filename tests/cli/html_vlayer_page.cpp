@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "catalogue/builtin.hpp"
 #include "catalogue/registry.hpp"
 #include "checker/property.hpp"
 #include "cli/model_run.hpp"
@@ -18,7 +19,7 @@ int main(int argc, char** argv) {
     std::cerr << "usage: cli_html_vlayer_page FILE\n";
     return 2;
   }
-  const catalogue::ModelDefinition& definition = catalogue::find_model("vlayer-mc");
+  const catalogue::ModelDefinition& definition = catalogue::builtin_models().find("vlayer-mc");
   const catalogue::ParamValues values = catalogue::resolve_params(definition, {});
   const catalogue::ModelInstance instance = definition.build(values);
   const auto target = tioa::find_variable<int>(instance.system, "CN_0.cn.target");
@@ -40,7 +41,7 @@ int main(int argc, char** argv) {
   run.results.push_back(checker::run_property(instance.system, no_target, options));
 
   std::ofstream page(argv[1]);
-  cli::write_html(page, cli::run_json(run, true));
+  cli::write_html(page, cli::run_json(run, true), definition.picture);
   page.close();
   if (!page) {
     std::cerr << "cannot write " << argv[1] << '\n';

@@ -3,6 +3,7 @@
 // variant shows each safety check failing; the findings P1 and P2 of the README replayed.
 #include <catch2/catch.hpp>
 
+#include "catalogue/builtin.hpp"
 #include "catalogue/registry.hpp"
 #include "tests/catalogue/path_reservation/run_check.hpp"
 
@@ -72,7 +73,7 @@ TEST_CASE("path-reservation: on the cycle of three cells every robot raises risk
     REQUIRE(r.verdict == Verdict::holds);
     REQUIRE(r.trace); // the worst-case witness: it ends with all three halted
     const auto& last = r.trace->steps.back();
-    const auto& definition = catalogue::find_model("path-reservation");
+    const auto& definition = catalogue::builtin_models().find("path-reservation");
     const auto instance = definition.build(
         catalogue::resolve_params(definition, {"scenario=cycle", std::string("sort=") + sort}));
     for (int robot = 1; robot <= 3; ++robot) {

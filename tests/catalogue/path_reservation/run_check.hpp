@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "catalogue/builtin.hpp"
 #include "catalogue/path_reservation.hpp"
 #include "catalogue/registry.hpp"
 #include "checker/property.hpp"
@@ -14,7 +15,7 @@ namespace path_reservation_test {
 
 inline checker::PropertyResult run(const std::string& scenario, const std::string& property,
                                    std::vector<std::string> settings = {}) {
-  const auto& definition = catalogue::find_model("path-reservation");
+  const auto& definition = catalogue::builtin_models().find("path-reservation");
   settings.push_back("scenario=" + scenario);
   const auto instance = definition.build(catalogue::resolve_params(definition, settings));
   for (const auto& p : instance.properties)

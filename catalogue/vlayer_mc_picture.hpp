@@ -8,13 +8,13 @@
 #include <ostream>
 #include <string>
 
-#include "cli/report_json.hpp"
+#include "catalogue/registry.hpp"
 
-namespace cli {
+namespace catalogue {
 
 // `params` is the report's "params" object (rows, cols, nbh, b, robots); `state` a trace
 // step's "state" object; `id` makes the picture's element ids unique on the page.
-void write_vlayer_picture(std::ostream& out, const Json& params, const Json& state,
-                          const std::string& id);
+void write_vlayer_mc_picture(std::ostream& out, const Json& params, const Json& state,
+                             const std::string& id);
 
-} // namespace cli
+} // namespace catalogue

@@ -1,4 +1,4 @@
-#include "cli/render_path_reservation.hpp"
+#include "catalogue/path_reservation_picture.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,16 +8,24 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
-#include "cli/html_text.hpp"
+#include <nlohmann/json.hpp>
+
 #include "models/path_reservation/path_geometry.hpp"
 #include "models/path_reservation/scenario_file.hpp"
+#include "support/xml_escape.hpp"
 
-namespace cli {
+namespace catalogue {
 
 namespace {
+
+// Text for the page, which is also well-formed XML (as cli/html_text.hpp).
+std::string html_text(std::string_view text) {
+  return support::xml_escape(text);
+}
 
 using path_reservation::Cell;
 using path_reservation::CellSet;
@@ -402,4 +410,4 @@ void write_path_reservation_picture(std::ostream& out, const Json& params, const
   out << "</table>\n";
 }
 
-} // namespace cli
+} // namespace catalogue

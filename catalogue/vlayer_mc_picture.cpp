@@ -1,16 +1,24 @@
-#include "cli/render_vlayer.hpp"
+#include "catalogue/vlayer_mc_picture.hpp"
 
 #include <algorithm>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
-#include "cli/html_text.hpp"
-#include "models/vlayer_mc/lattice.hpp"
+#include <nlohmann/json.hpp>
 
-namespace cli {
+#include "models/vlayer_mc/lattice.hpp"
+#include "support/xml_escape.hpp"
+
+namespace catalogue {
 
 namespace {
+
+// Text for the page, which is also well-formed XML (as cli/html_text.hpp).
+std::string html_text(std::string_view text) {
+  return support::xml_escape(text);
+}
 
 // A variable of the state by name: its number, or nothing when it is absent or ⊥.
 std::optional<long> number(const Json& state, const std::string& name) {
@@ -66,8 +74,8 @@ void arrow(std::ostream& out, double x1, double y1, double x2, double y2, const 
 
 } // namespace
 
-void write_vlayer_picture(std::ostream& out, const Json& params, const Json& state,
-                          const std::string& id) {
+void write_vlayer_mc_picture(std::ostream& out, const Json& params, const Json& state,
+                             const std::string& id) {
   const std::string head = "head-" + id;
   const int rows = param(params, "rows", 1), cols = param(params, "cols", 2);
   const int b = param(params, "b", 2), robots = param(params, "robots", 1);
@@ -218,4 +226,4 @@ void write_vlayer_picture(std::ostream& out, const Json& params, const Json& sta
   out << "</ul>\n";
 }
 
-} // namespace cli
+} // namespace catalogue

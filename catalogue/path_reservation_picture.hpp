@@ -10,9 +10,9 @@
 #include <ostream>
 #include <string>
 
-#include "cli/report_json.hpp"
+#include "catalogue/registry.hpp"
 
-namespace cli {
+namespace catalogue {
 
 // `params` is the report's "params" object (its "scenario" names the plane and the paths);
 // `state` a trace step's "state" object; `id` makes the picture's element ids unique on
@@ -20,4 +20,4 @@ namespace cli {
 void write_path_reservation_picture(std::ostream& out, const Json& params, const Json& state,
                                     const std::string& id);
 
-} // namespace cli
+} // namespace catalogue

@@ -1,0 +1,249 @@
+#include "cli/app.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <new>
+#include <string>
+#include <thread>
+#include <utility>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/exit_status.hpp"
+#include "tioa/errors.hpp"
+
+namespace cli {
+
+std::uint64_t default_memory_mib() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0)
+    return 0;
+  return static_cast<std::uint64_t>(pages) / 4 * 3 * static_cast<std::uint64_t>(page_size) >> 20;
+}
+
+CLI::Validator whole_number() {
+  return CLI::Validator(
+      [](const std::string& text) {
+        if (text.empty() || text.size() > 15 ||
+            text.find_first_not_of("0123456789") != std::string::npos)
+          return std::string("'" + text + "' is not a whole number from 0 to 10^15");
+        return std::string();
+      },
+      "N>=0", "whole_number");
+}
+
+namespace {
+
+std::string program_name(const Program& program, int argc, char** argv) {
+  if (!program.name.empty())
+    return program.name;
+  if (argc > 0 && argv[0] && *argv[0])
+    return std::filesystem::path(argv[0]).filename().string();
+  return "tioa-check";
+}
+
+// "a, b, c" with `last` before the last one ("a, b or c").
+std::string join(const std::vector<std::string>& names, const std::string& separator,
+                 const std::string& last) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == names.size() ? last : separator) + names[i];
+  return out;
+}
+
+constexpr const char* exit_codes_help =
+    "Exit codes: 0 every property holds (suite: every verdict as expected), 1 some property "
+    "is violated (suite: some verdict not as expected), 2 usage or input error, 3 some check "
+    "hit a limit (incomplete) and none is violated.";
+
+// One line on stderr, "<program>: error: <message>"; the exit code of a usage error.
+int print_error(const std::string& program, const std::string& message) {
+  std::string line = message;
+  for (char& c : line)
+    if (c == '\n' || c == '\r')
+      c = ' ';
+  std::cerr << program << ": error: " << line << std::endl;
+  return usage_error;
+}
+
+// A finite number of seconds >= 0.
+const CLI::Validator seconds(
+    [](const std::string& text) {
+      double value = 0;
+      std::size_t end = 0;
+      try {
+        value = std::stod(text, &end);
+      } catch (const std::exception&) {
+        end = 0;
+      }
+      if (end == 0 || end != text.size() || !std::isfinite(value) || value < 0)
+        return std::string("'" + text + "' is not a number of seconds >= 0");
+      return std::string();
+    },
+    "S>=0", "seconds");
+
+struct Limits {
+  std::uint64_t max_states = 0;
+  double max_seconds = 0;
+  std::uint64_t max_memory_mib = default_memory_mib();
+};
+
+void add_model_options(CLI::App* command, ModelRequest& request, const std::string& program) {
+  command->add_option("MODEL", request.model, "the model (see " + program + " list)")->required();
+  command
+      ->add_option("-p,--param", request.param_settings,
+                   "a parameter setting name=value (repeatable; or name=value,name=value)")
+      ->type_name("NAME=VALUE")
+      ->allow_extra_args(false); // split by catalogue::split_settings, not at every comma
+  command->add_option("--prop", request.properties, "a property to check (repeatable)")
+      ->type_name("NAME")
+      ->allow_extra_args(false)
+      ->delimiter(',');
+}
+
+void add_run_options(CLI::App* command, RunSettings& settings, Limits& limits, std::string& trace,
+                     bool with_trace) {
+  command->add_flag("--json", settings.json, "print one JSON object on stdout");
+  command->add_option("--junit", settings.junit_path, "also write a JUnit XML report to FILE")
+      ->type_name("FILE");
+  command->add_option("-j,--threads", settings.threads, "worker threads (default: all cores)")
+      ->type_name("N")
+      ->check(CLI::Range(1u, 4096u));
+  command->add_option("--max-states", limits.max_states, "stop after N states (0: no limit)")
+      ->type_name("N")
+      ->check(whole_number());
+  command->add_option("--max-seconds", limits.max_seconds, "stop after S seconds (0: no limit)")
+      ->type_name("S")
+      ->check(seconds);
+  command
+      ->add_option(
+          "--max-memory", limits.max_memory_mib,
+          "stop when the exploration (state store, edges, the level in progress) exceeds MiB "
+          "mebibytes (default: three quarters of the memory, " +
+              std::to_string(default_memory_mib()) + " here; 0: no limit)")
+      ->type_name("MiB")
+      ->check(whole_number());
+  if (with_trace) {
+    command->add_option("--trace", trace, "how to show traces: text, json or none")
+        ->type_name("MODE")
+        ->check(CLI::IsMember({"text", "json", "none"}));
+    command
+        ->add_option("--html", settings.html_path,
+                     "also write the traces as one self-contained HTML page to FILE")
+        ->type_name("FILE");
+  }
+}
+
+} // namespace
+
+int run(int argc, char** argv, const catalogue::Catalogue& models, const Program& program) {
+  const std::string name = program_name(program, argc, argv);
+  const auto fail = [&](const std::string& message) { return print_error(name, message); };
+  CLI::App app{program.description.empty()
+                   ? name + ": an explicit-state checker for timed I/O automata"
+                   : program.description,
+               name};
+  app.footer(exit_codes_help);
+  app.set_version_flag("--version", TIOA_CHECK_VERSION);
+  app.require_subcommand(0, 1);
+
+  RunSettings settings;
+  settings.threads = std::max(1u, std::thread::hardware_concurrency());
+  ModelRequest request;
+  Limits limits;
+  std::string trace = "text";
+  std::string from = "arbitrary";
+  bool list_json = false;
+
+  CLI::App* list = app.add_subcommand("list", "list the models, their parameters and properties");
+  list->add_flag("--json", list_json, "print one JSON object on stdout");
+
+  CLI::App* check = app.add_subcommand("check", "check a model's properties");
+  add_model_options(check, request, name);
+  add_run_options(check, settings, limits, trace, true);
+
+  CLI::App* explore = app.add_subcommand(
+      "explore", "search counterexamples: invariants and deadlock / time-lock, from arbitrary "
+                 "states (U(A)) or from the start states");
+  add_model_options(explore, request, name);
+  explore->add_option("--from", from, "arbitrary (every valuation is a start state) or start")
+      ->type_name("FROM")
+      ->check(CLI::IsMember({"arbitrary", "start"}));
+  add_run_options(explore, settings, limits, trace, true);
+
+  CLI::App* suite = app.add_subcommand(
+      "suite", "run every model's suite against the expected verdicts (the CI run)");
+  std::vector<std::string> suite_models;
+  suite->add_option("--model", suite_models, "run only this model's entries (repeatable)")
+      ->type_name("MODEL");
+  add_run_options(suite, settings, limits, trace, false);
+
+  // The program's own commands, each with the function that runs it once given.
+  std::vector<std::pair<CLI::App*, std::function<int()>>> extra;
+  for (const Command& command : program.commands) {
+    CLI::App* sub = app.add_subcommand(command.name, command.description);
+    extra.emplace_back(sub, command.declare(*sub));
+  }
+  std::vector<std::string> names{"list", "check", "explore", "suite"};
+  for (const Command& command : program.commands)
+    names.push_back(command.name);
+
+  for (CLI::App* command : app.get_subcommands({}))
+    command->footer(exit_codes_help);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) { // --help, --help-all, --version
+    return app.exit(e);
+  } catch (const CLI::ExtrasError& e) {
+    if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-')
+      return fail(std::string("unknown command '") + argv[1] +
+                  "' (commands: " + join(names, ", ", ", ") + ")");
+    return fail(std::string(e.what()) + " (see " + name + " --help)");
+  } catch (const CLI::ParseError& e) {
+    return fail(std::string(e.what()) + " (see " + name + " --help)");
+  }
+
+  if (app.get_subcommands().empty()) {
+    std::cout << app.help();
+    return fail("a command is required: " + join(names, ", ", " or "));
+  }
+
+  request.param_settings = catalogue::split_settings(request.param_settings);
+  settings.limits.max_states = limits.max_states;
+  settings.limits.max_seconds = limits.max_seconds;
+  if (limits.max_memory_mib > (std::numeric_limits<std::uint64_t>::max() >> 20))
+    return fail("--max-memory: " + std::to_string(limits.max_memory_mib) + " MiB is too large");
+  settings.limits.max_memory_bytes = limits.max_memory_mib << 20;
+  settings.trace = trace == "json"   ? TraceMode::json
+                   : trace == "none" ? TraceMode::none
+                                     : TraceMode::text;
+
+  try {
+    if (list->parsed())
+      return command_list(models, list_json);
+    if (check->parsed())
+      return command_check(models, request, settings);
+    if (explore->parsed())
+      return command_explore(models, request, from, settings);
+    for (const auto& [command, runner] : extra)
+      if (command->parsed())
+        return runner();
+    return command_suite(models, settings, suite_models);
+  } catch (const catalogue::UsageError& e) {
+    return fail(e.what());
+  } catch (const tioa::ModelError& e) {
+    return fail(std::string("model error: ") + e.what());
+  } catch (const std::bad_alloc&) {
+    return fail("out of memory (bound the run with --max-memory or --max-states)");
+  } catch (const std::exception& e) {
+    return fail(std::string("internal error: ") + e.what());
+  }
+}
+
+} // namespace cli
