@@ -10,6 +10,7 @@
 #include "checker/trace.hpp"
 #include "models/vlayer_mc/vlayer.hpp"
 #include "proofs/vlayer_mc/rmc_matching.hpp"
+#include "support/text.hpp"
 #include "tioa/successors.hpp"
 
 namespace vlayer_mc {
@@ -30,7 +31,7 @@ std::vector<std::string> actions_from(const checker::Trace& trace, std::size_t f
 
 std::string actions_of(const checker::Trace& trace) {
   const std::vector<std::string> out = actions_from(trace, 1);
-  return out.empty() ? "(none: a start state)" : joined(out);
+  return out.empty() ? "(none: a start state)" : support::join(out);
 }
 
 } // namespace
@@ -88,7 +89,7 @@ PropertyResult check_lemma_7_6(const VlConfig& c, const tioa::Automaton& layer, 
     std::vector<std::string> why; // what each y step with the same label breaks
     for (const auto& candidate : v.candidates)
       why.push_back(gy.describe(candidate.label) + " breaks " +
-                    joined(relation.broken(v.to.data(), candidate.to.data())));
+                    support::join(relation.broken(v.to.data(), candidate.to.data())));
     const std::vector<std::string> ysteps = actions_from(v.y_trace, 1);
     const checker::Trace to_y = checker::trace_to(gy, m.reach, origin[v.start]);
     r.verdict = Verdict::violated;
@@ -98,9 +99,9 @@ PropertyResult check_lemma_7_6(const VlConfig& c, const tioa::Automaton& layer, 
     r.message = "the step " + gx.describe(v.step) + " from x after " +
                 std::to_string(v.y_trace.length()) +
                 " matched steps has no step of y with the same label to a related state (" +
-                (why.empty() ? std::string("y has no such step") : joined(why, "; ")) + ")";
+                (why.empty() ? std::string("y has no such step") : support::join(why, "; ")) + ")";
     r.notes.push_back("y: reached by " + actions_of(to_y) + "; then " +
-                      (ysteps.empty() ? std::string("(no step)") : joined(ysteps)));
+                      (ysteps.empty() ? std::string("(no step)") : support::join(ysteps)));
     return r;
   }
   if (!search.holds()) {

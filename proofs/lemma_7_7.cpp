@@ -10,6 +10,7 @@
 #include "models/vlayer_mc/slots.hpp"
 #include "models/vlayer_mc/vlayer.hpp"
 #include "proofs/vlayer_mc/rmc_matching.hpp"
+#include "support/text.hpp"
 #include "tioa/successors.hpp"
 
 namespace vlayer_mc {
@@ -80,7 +81,7 @@ PropertyResult check_lemma_7_7(const VlConfig& c, const tioa::Automaton& layer, 
           " family states have no related reachable state; the first has robot 0 "
           "at point " +
           std::to_string(value(x.data(), loc)) + " and the closest reachable state breaks " +
-          joined(closest(other, m.reach, x.data()).second));
+          support::join(closest(other, m.reach, x.data()).second));
     }
   if (first[chosen]) {
     const auto& x = m.family[*first[chosen]];
@@ -92,7 +93,7 @@ PropertyResult check_lemma_7_7(const VlConfig& c, const tioa::Automaton& layer, 
     r.message = std::to_string(unmatched[chosen]) + " of the " + std::to_string(size) +
                 " ResetMC states of the family have no related reachable state; the state "
                 "shown is the first, and the closest reachable state breaks " +
-                joined(closest(relation, m.reach, x.data()).second);
+                support::join(closest(relation, m.reach, x.data()).second);
     return r;
   }
   r.verdict = Verdict::holds;

@@ -5,6 +5,7 @@
 #include "models/vlayer_mc/lmc.hpp"
 #include "models/vlayer_mc/reset_mc.hpp"
 #include "proofs/vlayer_mc/known_lmc.hpp"
+#include "support/text.hpp"
 #include "tioa/operators.hpp"
 
 namespace vlayer_mc {
@@ -14,13 +15,6 @@ namespace {
 using checker::PropertyResult;
 using checker::Verdict;
 using tioa::Word;
-
-std::string joined(const std::vector<std::string>& parts) {
-  std::string out;
-  for (const auto& part : parts)
-    out += (out.empty() ? "" : ", ") + part;
-  return out;
-}
 
 const char* window_name(MWindow window) {
   return window == MWindow::closed ? "clause (2) read with the window [0, e + 2d + 2ε] (F1)"
@@ -32,7 +26,7 @@ void closure_counterexample(PropertyResult& r, const tioa::SuccessorGenerator& g
                             const checker::Exploration& ex, const ClauseCheck& clauses,
                             const std::string& from) {
   const checker::StateId id = *ex.found;
-  const auto broken = joined(clauses(tioa::State(ex.store.state(id), 0)));
+  const auto broken = support::join(clauses(tioa::State(ex.store.state(id), 0)));
   r.verdict = Verdict::violated;
   r.trace = checker::trace_to(generator, ex, id);
   r.trace_role = "counterexample";
@@ -183,7 +177,7 @@ PropertyResult check_reset_in_l1mc(const VlConfig& c, const tioa::Automaton& sys
       r.trace_kind = "invariant";
       r.notes.push_back("clause (1) is needed: a reachable state meets Def 7.2 (2)-(5) but "
                         "breaks L1MC (" +
-                        joined(clauses(tioa::State(ex.store.state(*first_outside), 0))) +
+                        support::join(clauses(tioa::State(ex.store.state(*first_outside), 0))) +
                         "); the witness trace leads to it");
     }
   }

@@ -18,10 +18,6 @@ using checker::StateId;
 using tioa::Slot;
 using tioa::Word;
 
-std::string count(std::uint64_t n) {
-  return std::to_string(n);
-}
-
 std::vector<std::vector<Word>> family_states(const VlConfig& c, const tioa::Automaton& layer) {
   std::vector<std::vector<Word>> out;
   std::vector<Word> buffer(layer.words() + 1, 0);
@@ -124,15 +120,8 @@ closest(const RmcRelation& relation, const checker::Exploration& reach, const Wo
   return best;
 }
 
-std::string joined(const std::vector<std::string>& parts, const char* separator) {
-  std::string out;
-  for (const auto& part : parts)
-    out += (out.empty() ? "" : separator) + part;
-  return out;
-}
-
 std::string family_figure(const VlConfig& c, const Matching& m) {
-  return "the " + describe_reset_family(c) + "; " + count(m.in_reset_mc) +
+  return "the " + describe_reset_family(c) + "; " + std::to_string(m.in_reset_mc) +
          " of them meet Def 7.2 " +
          "with the window read; the family, not all of ResetMC (V_u, VW's ages and GPS ages " +
          "are left free by Def 7.2)";

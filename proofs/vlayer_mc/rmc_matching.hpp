@@ -60,9 +60,6 @@ Matching match_family(const VlConfig& config, const tioa::Automaton& layer,
 std::pair<checker::StateId, std::vector<std::string>>
 closest(const RmcRelation& relation, const checker::Exploration& reach, const tioa::Word* x);
 
-// The parts, one after the other: "a, b, c".
-std::string joined(const std::vector<std::string>& parts, const char* separator = ", ");
-
 // What the figure `covered` of Lemmas 7.6 and 7.7 says of the family.
 std::string family_figure(const VlConfig& config, const Matching& m);
 
