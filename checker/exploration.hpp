@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "checker/mapped_memory.hpp"
 #include "checker/options.hpp"
 #include "checker/state_store.hpp"
 
@@ -31,7 +32,7 @@ struct Exploration {
   explicit Exploration(std::uint32_t words) : store(words) {}
 
   StateStore store;
-  std::vector<StateId> parent; // no_parent for start states
+  MappedVector<StateId> parent; // no_parent for start states
   std::uint64_t start_states = 0;
   std::uint64_t edges = 0;
   std::uint64_t expanded = 0;

@@ -17,6 +17,8 @@
 #include <limits>
 #include <vector>
 
+#include "checker/mapped_memory.hpp"
+
 namespace checker {
 
 // Bytes of the bigger buffer that making room for `more` elements in `v` allocates, 0 when
@@ -51,6 +53,13 @@ public:
     if (!fits(growth_bytes(v, more)))
       return false;
     grow(v, more);
+    return true;
+  }
+  // The same for a vector of mapped memory, which grows without a copy.
+  template <class T> bool grow_within(MappedVector<T>& v, std::size_t more) {
+    if (!fits(v.growth_bytes(more)))
+      return false;
+    v.grow(more);
     return true;
   }
 

@@ -1,62 +1,57 @@
 #include "checker/state_store.hpp"
 
-#include <algorithm>
 #include <stdexcept>
 
 namespace checker {
 
 namespace {
-constexpr std::uint64_t initial_slots = 1024;
-}
+constexpr std::uint32_t initial_bits = 10;
+// States hashed ahead of the one placed while the table is filled again.
+constexpr std::uint64_t rebuild_prefetch = 16;
+} // namespace
 
-StateStore::StateStore(std::uint32_t words) : words_(words), stride_(words + 1) {
-  table_ = PageBuffer(initial_slots * stride_);
-  mask_ = initial_slots - 1;
+StateStore::StateStore(std::uint32_t words) : words_(words) {
+  rebuild(initial_bits);
 }
 
 std::pair<StateId, bool> StateStore::insert(const Word* state, std::uint64_t hash) {
-  if ((count_ + 1) * 2 > mask_ + 1)
-    grow();
-  const std::uint64_t tag = hash >> 32;
-  std::uint64_t at = hash & mask_;
-  for (;; at = (at + 1) & mask_) {
-    const Word* slot = table_.data() + at * stride_;
-    if (slot[0] == 0)
-      break;
-    if ((slot[0] >> 32) == tag && same(slot + 1, state))
-      return {static_cast<StateId>((slot[0] & 0xffffffffu) - 1), false};
-  }
+  if (const auto known = find(state, hash))
+    return {*known, false};
   if (count_ >= max_states)
-    throw std::length_error("state store is full (2^32 states)");
+    throw std::length_error("state store is full (3 * 2^30 states)");
+  if (needs_bigger_table(count_ + 1))
+    rebuild(bits_ + 1);
   const StateId id = static_cast<StateId>(count_++);
-  const std::size_t end = std::size_t{id} * words_;
-  if (end + words_ > arena_.size())
-    arena_.resize(arena_growth(arena_.size(), words_));
+  arena_.grow(words_);
   for (std::uint32_t i = 0; i < words_; ++i)
-    arena_[end + i] = state[i];
-  Word* slot = table_.data() + at * stride_;
-  slot[0] = (tag << 32) | (std::uint64_t{id} + 1);
-  for (std::uint32_t i = 0; i < words_; ++i)
-    slot[1 + i] = state[i];
+    arena_.push_back(state[i]);
+  std::uint64_t at = hash & mask_;
+  while (table_[at] != 0)
+    at = (at + 1) & mask_;
+  table_[at] = static_cast<std::uint32_t>((tag_of(hash) << bits_) | (std::uint64_t{id} + 1));
   return {id, true};
 }
 
-void StateStore::grow() {
-  const std::uint64_t slots = (mask_ + 1) * 2;
-  PageBuffer bigger(slots * stride_);
-  const std::uint64_t mask = slots - 1;
-  for (std::uint64_t old = 0; old <= mask_; ++old) {
-    const Word* slot = table_.data() + old * stride_;
-    if (slot[0] == 0)
-      continue;
-    std::uint64_t at = hash_state(slot + 1, words_) & mask;
-    while (bigger.data()[at * stride_] != 0)
-      at = (at + 1) & mask;
-    for (std::uint32_t i = 0; i < stride_; ++i)
-      bigger.data()[at * stride_ + i] = slot[i];
+void StateStore::rebuild(std::uint32_t bits) {
+  table_.release();
+  bits_ = bits;
+  mask_ = (std::uint64_t{1} << bits) - 1;
+  table_ = MappedArray<std::uint32_t>(mask_ + 1);
+  std::uint64_t ahead[rebuild_prefetch];
+  auto hash_of = [&](std::uint64_t id) {
+    return hash_state(state(static_cast<StateId>(id)), words_);
+  };
+  for (std::uint64_t id = 0; id < std::min(count_, rebuild_prefetch); ++id)
+    prefetch(ahead[id] = hash_of(id));
+  for (std::uint64_t id = 0; id < count_; ++id) {
+    const std::uint64_t hash = ahead[id % rebuild_prefetch];
+    if (id + rebuild_prefetch < count_)
+      prefetch(ahead[id % rebuild_prefetch] = hash_of(id + rebuild_prefetch));
+    std::uint64_t at = hash & mask_;
+    while (table_[at] != 0)
+      at = (at + 1) & mask_;
+    table_[at] = static_cast<std::uint32_t>((tag_of(hash) << bits_) | (id + 1));
   }
-  table_.swap(bigger);
-  mask_ = mask;
 }
 
 } // namespace checker

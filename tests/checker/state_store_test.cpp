@@ -30,8 +30,8 @@ Words stored(const StateStore& store, StateId id) {
   return Words(store.state(id), store.state(id) + store.words());
 }
 
-// Pairs of one-word states whose hashes have the same top 32 bits (the tag the table
-// keeps), found by a deterministic birthday search.
+// Pairs of one-word states whose hashes have the same top 32 bits (so the same tag, which
+// the table takes from those bits, at every size), found by a deterministic birthday search.
 std::vector<std::pair<Word, Word>> tag_collisions(std::size_t wanted) {
   std::unordered_map<std::uint32_t, Word> seen;
   std::vector<std::pair<Word, Word>> out;
