@@ -3,21 +3,13 @@
 namespace checker {
 
 void Worker::clear() {
-  states.clear();
-  candidates.clear();
-  edges.clear();
+  known_edges.clear();
+  new_edges.clear();
   stuck.clear();
+  targets.clear();
   edge_count = 0;
   expanded = 0;
   error = nullptr;
-}
-
-bool Worker::grow_room(std::size_t successors, std::size_t edge_room, std::size_t stuck_room) {
-  if (!allowance.fits(bytes(), states.growth_bytes(successors)))
-    return false;
-  states.grow(successors);
-  return grow_within(candidates, successors) && grow_within(edges, edge_room) &&
-         grow_within(stuck, stuck_room);
 }
 
 template <class T> bool Worker::grow_within(std::vector<T>& v, std::size_t more) {
@@ -25,6 +17,11 @@ template <class T> bool Worker::grow_within(std::vector<T>& v, std::size_t more)
     return false;
   grow(v, more);
   return true;
+}
+
+bool Worker::grow_room(std::size_t edge_room, std::size_t stuck_room) {
+  return grow_within(known_edges, edge_room) && grow_within(new_edges, edge_room) &&
+         grow_within(stuck, stuck_room);
 }
 
 } // namespace checker

@@ -1,8 +1,9 @@
 #pragma once
-// Expansion: a worker turns a contiguous chunk of the frontier into candidates (successors
-// that were not in the store when the level began) and edges to states that were. The
-// store is only read here, so the workers of a level run in parallel, each on its own
-// chunk and its own buffers; merge.hpp then inserts the candidates in frontier order.
+// Expansion: the workers of a level expand contiguous chunks of the frontier (a range of
+// ids) in parallel and insert the successors into the store themselves, concurrently
+// (state_store.hpp); the store grows while they wait at the growth gate
+// (growth_gate.hpp). Each new state keeps the step that found it first (discovery.hpp), so
+// that level_end.hpp can number the level as a sequential search would.
 
 #include <cstddef>
 #include <cstdint>
@@ -12,7 +13,9 @@
 #include <thread>
 #include <vector>
 
+#include "checker/discovery.hpp"
 #include "checker/exploration.hpp"
+#include "checker/growth_gate.hpp"
 #include "checker/hooks.hpp"
 #include "checker/memory_budget.hpp"
 #include "checker/progress.hpp"
@@ -22,24 +25,24 @@
 
 namespace checker {
 
-// A successor not in the store when its level began; its state is kept alongside.
-struct Candidate {
-  std::uint64_t hash;
-  StateId from;
-  std::uint8_t duration;
-  bool target;
-};
-
-// What the workers of one level read (the signals they also write).
+// What the workers of one level share (the signals, the gate, the discovery keys and the
+// store are written concurrently).
 struct Level {
   const tioa::SuccessorGenerator& generator;
-  const StateStore& store;
-  std::span<const StateId> frontier;
+  StateStore& store;
+  Discovery& discovery;
+  GrowthGate& gate;
+  StateId begin, end;       // the frontier: ids begin.. end - 1
+  std::uint64_t max_states; // 0: no limit
   std::uint32_t depth;
   std::size_t workers; // expanding this level
   double max_seconds;  // 0: no time limit
   Progress& progress;  // drawn by the first worker only
   LevelSignals& signals;
+
+  bool concurrent() const { return workers > 1; }
+  // The first id of the level being built.
+  StateId first_new() const { return discovery.first(); }
 };
 
 // Frontiers smaller than this are expanded by one worker.
@@ -55,13 +58,13 @@ inline std::size_t workers_for(std::size_t frontier_size, std::size_t available)
 class Worker {
 public:
   explicit Worker(std::uint32_t words)
-      : states(words), pending_states(words), scratch(words + 1, 0), representative(words + 1, 0) {}
+      : pending_states(words), scratch(words + 1, 0), representative(words + 1, 0) {}
 
   // The level's results, in the order of the chunk.
-  StateBuffer states;                // the candidates' states
-  std::vector<Candidate> candidates; // successors not in the store
-  std::vector<Edge> edges;           // to states in the store (with record_edges)
-  std::vector<StateId> stuck;        // expanded states with no successor
+  std::vector<Edge> known_edges; // to states stored before the level (with record_edges)
+  std::vector<Edge> new_edges;   // to states of the level being built (with record_edges)
+  std::vector<StateId> stuck;    // expanded states with no successor
+  std::vector<StateId> targets;  // new states that are targets
   std::uint64_t edge_count = 0;
   std::uint64_t expanded = 0;
   std::exception_ptr error;
@@ -69,33 +72,32 @@ public:
 
   // What this worker holds.
   std::size_t bytes() const {
-    return pending_states.bytes() + states.bytes() + pending.capacity() * sizeof(Pending) +
-           candidates.capacity() * sizeof(Candidate) + edges.capacity() * sizeof(Edge) +
-           stuck.capacity() * sizeof(StateId);
+    return pending_states.bytes() + pending.capacity() * sizeof(Pending) +
+           (known_edges.capacity() + new_edges.capacity()) * sizeof(Edge) +
+           (stuck.capacity() + targets.capacity()) * sizeof(StateId);
   }
 
   // Forgets the last level's results, keeping the memory.
   void clear();
 
-  // Expands frontier[begin, end) of the level; stops early when a limit is met (and
+  // Expands frontier ids [begin, end) of the level; stops early when a limit is met (and
   // signals it), or on an exception, which it keeps in `error`. The worker on the calling
   // thread draws the progress line.
   template <class Hooks>
-  void expand(const Hooks& hooks, const Level& level, std::size_t begin, std::size_t end,
+  void expand(const Hooks& hooks, const Level& level, StateId begin, StateId end,
               bool calling_thread);
 
-  // Room in the level buffers for the `successors` of one state (as candidates, or as
-  // edges to known states when `edges_too`), growing them only within the allowance;
-  // false, with nothing grown past it, when it would be exceeded.
+  // Room in the level buffers for the `successors` of one state (as edges when
+  // `edges_too`, a stuck state when there are none), growing them only within the
+  // allowance; false, with nothing grown past it, when it would be exceeded.
   bool make_room(std::size_t successors, bool edges_too) {
     const std::size_t edge_room = edges_too ? successors : 0;
     const std::size_t stuck_room = successors == 0 ? 1 : 0;
-    if (states.growth_bytes(successors) == 0 &&
-        candidates.capacity() - candidates.size() >= successors &&
-        edges.capacity() - edges.size() >= edge_room &&
+    if (known_edges.capacity() - known_edges.size() >= edge_room &&
+        new_edges.capacity() - new_edges.size() >= edge_room &&
         stuck.capacity() - stuck.size() >= stuck_room)
       return true;
-    return grow_room(successors, edge_room, stuck_room);
+    return grow_room(edge_room, stuck_room);
   }
 
 private:
@@ -103,8 +105,11 @@ private:
     std::uint64_t hash;
     std::uint32_t duration;
   };
-  bool grow_room(std::size_t successors, std::size_t edge_room, std::size_t stuck_room);
+  bool grow_room(std::size_t edge_room, std::size_t stuck_room);
   template <class T> bool grow_within(std::vector<T>& v, std::size_t more);
+  // Inserts or finds one successor; false when the level stops.
+  template <class Hooks>
+  bool insert(const Hooks& hooks, const Level& level, StateId from, std::uint32_t step);
 
   StateBuffer pending_states; // successors of the state being expanded
   std::vector<Pending> pending;
@@ -113,16 +118,61 @@ private:
 };
 
 template <class Hooks>
-void Worker::expand(const Hooks& hooks, const Level& level, std::size_t begin, std::size_t end,
+bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::uint32_t step) {
+  const Word* succ = pending_states[step];
+  const Pending& p = pending[step];
+  const std::uint64_t key = Discovery::key(from, step);
+  StateId to = 0;
+  bool fresh = false;
+  for (;;) {
+    if (!level.gate.checkpoint())
+      return false;
+    if (level.max_states && level.store.size() >= level.max_states) {
+      // At the state limit only stored states are found; a new one ends the run, and the
+      // level goes on for the counts.
+      const auto known = level.store.find(succ, p.hash);
+      if (!known) {
+        level.signals.state_limit = true;
+        return true;
+      }
+      to = *known;
+      break;
+    }
+    const StateStore::Claim claim =
+        level.store.find_or_insert(succ, p.hash, [&](StateId id, std::uint32_t slot) {
+          level.discovery.found(id, key, slot);
+        });
+    if (claim.kind == StateStore::Claim::Kind::full) {
+      level.gate.request();
+      continue;
+    }
+    to = claim.id;
+    fresh = claim.kind == StateStore::Claim::Kind::fresh;
+    break;
+  }
+  if (fresh) {
+    if (is_target(hooks, succ))
+      targets.push_back(to);
+  } else if (to >= level.first_new()) {
+    level.discovery.found_again(to, key, level.concurrent());
+  }
+  if (records_edges(hooks))
+    (to < level.first_new() ? known_edges : new_edges).push_back({from, edge_to(to, p.duration)});
+  return true;
+}
+
+template <class Hooks>
+void Worker::expand(const Hooks& hooks, const Level& level, StateId begin, StateId end,
                     bool calling_thread) {
   const std::uint32_t words = level.store.words();
   const bool record_edges = records_edges(hooks);
   try {
-    for (std::size_t i = begin; i < end; ++i) {
-      if (((i - begin) & 1023) == 1023) {
+    for (StateId id = begin; id < end; ++id) {
+      if (((id - begin) & 1023) == 1023) {
         if (calling_thread)
           level.progress.update(level.store.size(),
-                                level.frontier.size() - (i - begin) * level.workers, level.depth);
+                                (level.end - level.begin) - (id - begin) * level.workers,
+                                level.depth);
         if (level.max_seconds > 0) {
           if (level.signals.out_of_time.load(std::memory_order_relaxed))
             return;
@@ -131,10 +181,9 @@ void Worker::expand(const Hooks& hooks, const Level& level, std::size_t begin, s
             return;
           }
         }
-        if (level.signals.out_of_memory.load(std::memory_order_relaxed))
+        if (level.signals.out_of_memory.load(std::memory_order_relaxed) || level.gate.stopped())
           return;
       }
-      const StateId id = level.frontier[i];
       const Word* state = level.store.state(id);
       if (!expands(hooks, state))
         continue;
@@ -154,28 +203,19 @@ void Worker::expand(const Hooks& hooks, const Level& level, std::size_t begin, s
             pending_states.push(succ);
             pending.push_back({h, level.generator.duration(label)});
           });
-      // The successors pile up in the level buffers, which grow only within this
-      // worker's share of the memory left.
+      // Edges pile up in the level buffers, which grow only within this worker's share of
+      // the memory left.
       if (!make_room(n, record_edges)) {
         level.signals.out_of_memory = true;
         return;
       }
       ++expanded;
-      for (std::size_t k = 0; k < n; ++k) {
-        const Word* succ = pending_states[k];
-        const Pending& p = pending[k];
-        if (const auto known = level.store.find(succ, p.hash)) {
-          if (record_edges)
-            edges.push_back({id, edge_to(*known, p.duration)});
-          continue;
-        }
-        states.push(succ);
-        candidates.push_back(
-            {p.hash, id, static_cast<std::uint8_t>(p.duration), is_target(hooks, succ)});
-      }
       edge_count += n;
       if (n == 0)
         stuck.push_back(id);
+      for (std::size_t k = 0; k < n; ++k)
+        if (!insert(hooks, level, id, static_cast<std::uint32_t>(k)))
+          return;
     }
   } catch (...) {
     error = std::current_exception();
@@ -184,25 +224,28 @@ void Worker::expand(const Hooks& hooks, const Level& level, std::size_t begin, s
 
 // Expands a whole level with `workers` (as many as level.workers): the frontier is cut into
 // one contiguous chunk per worker, the first expanded on the calling thread. Each worker
-// may grow by an equal share of the memory left; the run's peak counts what they reached.
-// The first error of a worker, in worker order, is rethrown.
+// may grow its buffers by an equal share of the memory left; the run's peak counts what
+// they reached. The first error of a worker, in worker order, is rethrown.
 template <class Hooks>
 void expand_level(std::span<Worker> workers, const Hooks& hooks, const Level& level,
                   MemoryBudget& budget) {
   const std::size_t used = workers.size();
   for (Worker& w : workers)
     w.clear();
-  // The store and the frontiers do not change while the level is expanded.
   const std::size_t held = budget.held();
   const std::size_t share = budget.share_left(held, used);
   for (Worker& w : workers)
     w.allowance.begin_level(w.bytes(), share);
-  const std::size_t n = level.frontier.size();
+  const std::size_t n = level.end - level.begin;
+  auto chunk = [&](std::size_t t) { return static_cast<StateId>(level.begin + n * t / used); };
   std::vector<std::thread> threads;
   for (std::size_t t = 1; t < used; ++t)
-    threads.emplace_back(
-        [&, t] { workers[t].expand(hooks, level, n * t / used, n * (t + 1) / used, false); });
-  workers[0].expand(hooks, level, 0, n / used, true);
+    threads.emplace_back([&, t] {
+      workers[t].expand(hooks, level, chunk(t), chunk(t + 1), false);
+      level.gate.leave();
+    });
+  workers[0].expand(hooks, level, chunk(0), chunk(1), true);
+  level.gate.leave();
   for (auto& thread : threads)
     thread.join();
   std::size_t level_peak = held;
@@ -211,6 +254,8 @@ void expand_level(std::span<Worker> workers, const Hooks& hooks, const Level& le
       std::rethrow_exception(w.error);
     level_peak += w.allowance.level_growth();
   }
+  if (level.gate.error())
+    std::rethrow_exception(level.gate.error());
   budget.note(level_peak);
 }
 

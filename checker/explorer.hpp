@@ -1,19 +1,22 @@
 #pragma once
-// Breadth-first exploration, level by level. The pipeline (explorer_impl.hpp), one part
-// per header:
-//   start_insertion.hpp  level 0: the start set, canonicalised, inserted in batches;
+// Breadth-first exploration, level by level; a level is a range of ids. The pipeline
+// (explorer_impl.hpp), one part per header:
+//   start_insertion.hpp  level 0: the start set, canonicalised, inserted in batches
+//                        through insertion.hpp (the state and memory limits);
 //   expansion.hpp        (parallel) the frontier cut into contiguous chunks, one per
-//                        worker; each generates the successors of its states, drops those
-//                        already stored (the store is only read in this phase) and keeps
-//                        the rest as candidates;
-//   merge.hpp            (one thread) candidates inserted worker by worker, in frontier
-//                        order, through insertion.hpp (the state and memory limits);
+//                        worker; each generates the successors of its states and inserts
+//                        them into the store itself, concurrently, each new state keeping
+//                        the step that found it first (discovery.hpp); the store grows
+//                        while the workers wait at growth_gate.hpp;
+//   level_end.hpp        (one thread) counts, stuck states and edges; the new states
+//                        renumbered in the order of their first steps, their parents;
+//                        the first target found;
 //   run_limits.hpp       time and memory after each level;
-//   frontier.hpp         the current and the next level;
 // with memory_budget.hpp (the memory limit at every growth), state_store.hpp (the visited
-// states) and trace.hpp (paths rebuilt from parents). Ids, parents, counts and the first
-// target found are therefore the same for every thread count as for a plain sequential
-// BFS, and traces are shortest in steps.
+// states) and trace.hpp (paths rebuilt from parents). Ids, parents, counts, edges and the
+// first target found are therefore the same for every thread count as for a plain
+// sequential BFS, and traces are shortest in steps. A level that meets the state limit
+// with several workers is done again by one (which states fit depends on their race).
 //
 // Hooks (hooks.hpp) are a template parameter: those a Hooks type lacks are not compiled
 // in. explore() for NoHooks and for ExploreHooks (std::function members, chosen at run

@@ -1,19 +1,21 @@
 #pragma once
 // explore() (explorer.hpp) as the pipeline of its parts:
-//   start insertion -> per level: expansion (parallel) -> merge -> limits -> next level.
+//   start insertion -> per level: expansion (parallel, inserting) -> level end -> limits.
 // Included by explorer.hpp; explorer.cpp compiles it once for NoHooks and ExploreHooks.
 
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <span>
 #include <vector>
 
+#include "checker/discovery.hpp"
 #include "checker/expansion.hpp"
 #include "checker/explorer.hpp"
-#include "checker/frontier.hpp"
+#include "checker/growth_gate.hpp"
 #include "checker/insertion.hpp"
+#include "checker/level_end.hpp"
 #include "checker/memory_budget.hpp"
-#include "checker/merge.hpp"
 #include "checker/progress.hpp"
 #include "checker/run_limits.hpp"
 #include "checker/start_insertion.hpp"
@@ -26,44 +28,73 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   const Limits& limits = options.limits;
   Exploration ex(generator.words());
   ex.threads = options.threads == 0 ? 1 : options.threads;
+  ex.store.set_inserters(ex.threads);
   Progress progress(options.progress, options.task.empty() ? "exploring" : options.task);
   std::vector<Worker> workers(ex.threads, Worker(generator.words()));
-  Frontier frontier;
-  // The memory limit counts the store, the parents, the edges, the frontiers and the
-  // workers' buffers.
+  Discovery discovery;
+  // The memory limit counts the store, the parents, the edges, the discovery keys of the
+  // level being built and the workers' buffers.
   MemoryBudget budget(limits.max_memory_bytes, [&] {
-    std::size_t bytes = ex.memory_bytes() + frontier.bytes();
+    std::size_t bytes = ex.memory_bytes() + discovery.bytes(ex.store.size());
     for (const Worker& w : workers)
       bytes += w.bytes();
     return bytes;
   });
-  Insertion insertion(ex, budget, limits.max_states, records_edges(hooks));
+  Insertion insertion(ex, budget, limits.max_states);
 
   std::optional<StopReason> stop =
-      insert_start_states(start, ex, hooks, insertion, frontier.next(), [&](bool stopped) {
+      insert_start_states(start, ex, hooks, insertion, [&](bool stopped) {
         std::optional<StopReason> reason;
         if (!stopped)
           reason = time_or_memory_exceeded(limits, progress, budget);
-        progress.update(ex.store.size(), frontier.next().size(), 0);
+        progress.update(ex.store.size(), ex.store.size(), 0);
         return reason;
       });
-  frontier.advance();
 
+  // The store grows by an eighth at a time (and the discovery keys with it), while the
+  // workers wait at the gate.
+  auto grow_store = [&] {
+    const std::uint64_t more = std::max<std::uint64_t>(ex.store.size() / 8, 4096);
+    if (!budget.fits(ex.store.room_bytes(more)))
+      return false;
+    const std::uint64_t tables = ex.store.tables_built();
+    ex.store.make_room(more);
+    if (ex.store.tables_built() != tables) // the level's states moved in the table
+      discovery.forget_slots();
+    discovery.make_room(ex.store.id_limit());
+    return true;
+  };
   LevelSignals signals;
-  while (!frontier.empty() && !stop) {
-    const std::span<Worker> used(workers.data(),
-                                 workers_for(frontier.current().size(), workers.size()));
-    expand_level(used, hooks,
-                 Level{generator, ex.store, frontier.current(), ex.depth, used.size(),
-                       limits.max_seconds, progress, signals},
-                 budget);
-    const std::optional<StopReason> merged =
-        merge_level(used, ex, insertion, budget, frontier.next());
-    stop = stop_after_level(merged, signals, limits, progress, budget);
+  StateId begin = 0, end = static_cast<StateId>(ex.store.size());
+  while (begin < end && !stop) {
+    const StateId first = end;
+    std::optional<StopReason> level_stop;
+    for (std::size_t used = workers_for(end - begin, workers.size());;) {
+      discovery.begin(first);
+      discovery.make_room(ex.store.id_limit());
+      GrowthGate gate(used, grow_store);
+      const Level level{
+          generator, ex.store, discovery,          gate,     begin,  end, limits.max_states,
+          ex.depth,  used,     limits.max_seconds, progress, signals};
+      const std::span<Worker> active(workers.data(), used);
+      expand_level(active, hooks, level, budget);
+      if (signals.state_limit && used > 1 && !signals.out_of_time && !signals.out_of_memory) {
+        // Which states fit under the limit depends on the race between the workers: the
+        // level is done again by one worker, which inserts them in breadth-first order.
+        ex.store.truncate(first);
+        signals.state_limit = false;
+        used = 1;
+        continue;
+      }
+      level_stop = finish_level(active, level, ex, records_edges(hooks), budget);
+      break;
+    }
+    stop = stop_after_level(level_stop, signals, limits, progress, budget);
     budget.note(budget.held());
-    frontier.advance();
+    begin = end;
+    end = static_cast<StateId>(ex.store.size());
     ++ex.depth;
-    progress.update(ex.store.size(), frontier.current().size(), ex.depth);
+    progress.update(ex.store.size(), end - begin, ex.depth);
   }
   if (stop)
     ex.stop = *stop;

@@ -17,6 +17,7 @@ namespace checker {
 struct LevelSignals {
   std::atomic<bool> out_of_time{false};
   std::atomic<bool> out_of_memory{false};
+  std::atomic<bool> state_limit{false}; // a new state met the state limit
 };
 
 // The time limit, then the memory held.

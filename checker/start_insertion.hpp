@@ -17,14 +17,14 @@ namespace checker {
 
 inline constexpr std::size_t start_batch = 256;
 
-// Inserts the start states into `level`, in enumeration order. `after_batch(stopped)` runs
-// after each batch (the run's time and memory checks, the progress line) and returns why
-// the run stops, if it does; `stopped` says whether it already has. Returns why the run
-// stopped (a target found, a limit), if it did.
+// Inserts the start states, in enumeration order (they are level 0: ids 0.. size() - 1).
+// `after_batch(stopped)` runs after each batch (the run's time and memory checks, the progress
+// line) and returns why the run stops, if it does; `stopped` says whether it already has. Returns
+// why the run stopped (a target found, a limit), if it did.
 template <class Hooks, class AfterBatch>
-std::optional<StopReason>
-insert_start_states(const tioa::StartSet& start, Exploration& ex, const Hooks& hooks,
-                    Insertion& insertion, std::vector<StateId>& level, AfterBatch&& after_batch) {
+std::optional<StopReason> insert_start_states(const tioa::StartSet& start, Exploration& ex,
+                                              const Hooks& hooks, Insertion& insertion,
+                                              AfterBatch&& after_batch) {
   struct StopEnumeration {};
   const std::uint32_t words = ex.store.words();
   std::optional<StopReason> stop;
@@ -36,7 +36,7 @@ insert_start_states(const tioa::StartSet& start, Exploration& ex, const Hooks& h
       ex.store.prefetch(hashes[b]);
     for (std::size_t b = 0; b < hashes.size() && !stop; ++b) {
       const Word* state = batch.data() + b * words;
-      const auto [outcome, id] = insertion.insert(state, hashes[b], no_parent, level);
+      const auto [outcome, id] = insertion.insert(state, hashes[b], no_parent);
       if (outcome == Insertion::Outcome::state_limit) {
         stop = StopReason::state_limit;
       } else if (outcome == Insertion::Outcome::memory_limit) {

@@ -1,26 +1,31 @@
 #pragma once
 // The visited-state store. Each state is held once, in the arena, in id order (ids are
-// dense, in insertion order), so per-state data lives in arrays indexed by id and
-// expanding a level reads the arena sequentially. The hash table holds 32-bit slots:
+// dense), so per-state data lives in arrays indexed by id and expanding a level reads the
+// arena sequentially. The hash table holds 32-bit slots:
 //
 //   slot = tag << m | (id + 1)      with 2^m slots; 0 is an empty slot
 //
 // The id takes the low m bits (the table is at most three quarters full, so id + 1 <
-// 2^m - 1), and the 32 - m bits left keep a tag of the hash, so that a lookup compares
-// the arena's state only when the tags agree. The home slot is the hash's low m bits; the
-// tag comes from its high bits. At 2^24 slots (up to 12.5 million states) a slot costs
-// 5.3 to 10.7 bytes per state, with 8 tag bits.
+// 2^m - 1; the all-ones id marks a slot being filled), and the 32 - m bits left keep a tag
+// of the hash, so that a lookup reads the arena only when the tags agree. The home slot
+// is the hash's low m bits; the tag comes from its high bits. At 2^24 slots (up to 12.5
+// million states) a slot costs 5.3 to 10.7 bytes per state, with 8 tag bits.
+//
+// Threads insert concurrently (find_or_insert): a new state claims an empty slot with a
+// compare-and-swap, takes the next id, is copied into the arena and is then published
+// with its id; a lookup that meets a slot being filled with its tag waits for it. The
+// store never grows on its own there: find_or_insert says `full` when it has no room, and
+// make_room() is then called while no thread uses the store (growth_gate.hpp).
 //
 // Growth never holds two tables: the old one is given back first and the new one, twice
-// as big, is filled again from the arena. The arena and the table are mapped memory
-// (mapped_memory.hpp), which grows without a copy.
-//
-// find() may run on several threads at once while nothing inserts; insert() is for one
-// thread at a time.
+// as big, is filled again from the arena. The arena is mapped memory that grows without a
+// copy (mapped_memory.hpp), but it may move.
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <utility>
 
 #include "checker/mapped_memory.hpp"
@@ -39,7 +44,7 @@ public:
   explicit StateStore(std::uint32_t words);
 
   std::uint32_t words() const { return words_; }
-  std::uint64_t size() const { return count_; }
+  std::uint64_t size() const { return counter().load(std::memory_order_relaxed); }
   const Word* state(StateId id) const { return arena_.data() + std::size_t{id} * words_; }
 
   // Starts loading the slot where a state with this hash would be.
@@ -48,7 +53,7 @@ public:
   std::optional<StateId> find(const Word* state, std::uint64_t hash) const {
     const std::uint64_t tag = tag_of(hash);
     for (std::uint64_t at = hash & mask_;; at = (at + 1) & mask_) {
-      const std::uint64_t slot = table_[at];
+      const std::uint64_t slot = published(at);
       if (slot == 0)
         return std::nullopt;
       if ((slot >> bits_) == tag) {
@@ -59,20 +64,82 @@ public:
     }
   }
 
-  // The id of the state, and whether it was new.
+  struct Claim {
+    enum class Kind { known, fresh, full } kind;
+    StateId id = 0; // when known or fresh
+  };
+
+  // The state's id, inserting it when it is new; safe with other threads doing the same.
+  // `on_fresh(id, slot)` runs for a new state before other threads can find it (`slot`:
+  // where the table holds it, until the table grows). `full`: there is
+  // no room for one more state (make_room() first).
+  template <class OnFresh>
+  Claim find_or_insert(const Word* state, std::uint64_t hash, OnFresh&& on_fresh) {
+    const std::uint64_t tag = tag_of(hash);
+    for (std::uint64_t at = hash & mask_;; at = (at + 1) & mask_) {
+      std::uint32_t slot =
+          std::atomic_ref<std::uint32_t>(table_[at]).load(std::memory_order_acquire);
+      if (slot == 0) {
+        if (counter().load(std::memory_order_relaxed) >= room_)
+          return {Claim::Kind::full};
+        const auto filling = static_cast<std::uint32_t>((tag << bits_) | mask_);
+        if (std::atomic_ref<std::uint32_t>(table_[at])
+                .compare_exchange_strong(slot, filling, std::memory_order_acquire)) {
+          const auto id = static_cast<StateId>(counter().fetch_add(1, std::memory_order_relaxed));
+          Word* to = arena_.data() + std::size_t{id} * words_;
+          for (std::uint32_t i = 0; i < words_; ++i)
+            to[i] = state[i];
+          on_fresh(id, static_cast<std::uint32_t>(at));
+          std::atomic_ref<std::uint32_t>(table_[at])
+              .store(static_cast<std::uint32_t>((tag << bits_) | (std::uint64_t{id} + 1)),
+                     std::memory_order_release);
+          return {Claim::Kind::fresh, id};
+        }
+        // Another thread took the slot first: look at what it put there.
+      }
+      if ((slot >> bits_) != tag)
+        continue;
+      while ((slot & mask_) == mask_) // being filled
+        slot = std::atomic_ref<std::uint32_t>(table_[at]).load(std::memory_order_acquire);
+      const StateId id = static_cast<StateId>((slot & mask_) - 1);
+      if (same(this->state(id), state))
+        return {Claim::Kind::known, id};
+    }
+  }
+
+  // For one thread at a time: the id of the state, and whether it was new.
   std::pair<StateId, bool> insert(const Word* state, std::uint64_t hash);
 
-  // What the store counts as held: the table and the arena.
-  std::size_t memory_bytes() const { return table_.bytes() + arena_.capacity() * sizeof(Word); }
+  // The room find_or_insert leaves for the threads that may pass its check at once (one
+  // each): at least as many as insert concurrently.
+  void set_inserters(std::uint32_t inserters);
+  // Room for `more` states beyond size() (and for the inserters' slack): a bigger table,
+  // a longer arena. While no thread uses the store. The bytes it would add first:
+  std::size_t room_bytes(std::uint64_t more) const;
+  void make_room(std::uint64_t more);
+
+  // Every id find_or_insert may hand out before it says `full` is below this.
+  std::uint64_t id_limit() const { return room_ + slack_; }
+
+  // How many times the table was built (slots move then).
+  std::uint64_t tables_built() const { return tables_built_; }
+
+  // Keeps the first `n` states (the rest are forgotten); while no thread uses the store.
+  void truncate(std::uint64_t n);
+  // Renumbers the states from `first` on: the state `order[i]` gets the id first + i
+  // (`order` is a permutation of first.. first + order.size() - 1, which must be size()).
+  // `slots[t]` is where the table holds the state first + t (nullptr: found here). While no
+  // thread uses the store.
+  void reorder(StateId first, std::span<const StateId> order, const std::uint32_t* slots);
+  // Where the table holds the state `id` (stored); while nobody inserts.
+  std::uint32_t slot_of(StateId id) const;
+
+  // What the store counts as held: the table and the arena (in steps, see MappedVector).
+  std::size_t memory_bytes() const { return table_.bytes() + arena_bytes_; }
 
   // The bytes memory_bytes() grows by at the next insert() (0 when it does not grow). The
   // table's old buffer is given back before the new one is taken.
-  std::size_t growth_bytes() const {
-    std::size_t bytes = arena_.growth_bytes(words_);
-    if (needs_bigger_table(count_ + 1))
-      bytes += table_.bytes();
-    return bytes;
-  }
+  std::size_t growth_bytes() const { return size() < room_ ? 0 : room_bytes(1); }
 
   // Three quarters of the largest table (2^32 slots).
   static constexpr std::uint64_t max_states = 0xc0000000u;
@@ -84,16 +151,40 @@ private:
         return false;
     return true;
   }
+  std::uint32_t published(std::uint64_t at) const {
+    std::uint32_t slot;
+    do
+      slot = std::atomic_ref<std::uint32_t>(const_cast<std::uint32_t&>(table_[at]))
+                 .load(std::memory_order_acquire);
+    while ((slot & mask_) == mask_); // being filled
+    return slot;
+  }
+  std::atomic_ref<std::uint64_t> counter() const {
+    return std::atomic_ref<std::uint64_t>(const_cast<std::uint64_t&>(count_));
+  }
   std::uint64_t tag_of(std::uint64_t hash) const { return bits_ < 32 ? hash >> (32 + bits_) : 0; }
-  bool needs_bigger_table(std::uint64_t states) const { return states * 4 > (mask_ + 1) * 3; }
+  // The states a table of 2^bits slots holds at most.
+  static std::uint64_t table_states(std::uint32_t bits) { return (std::uint64_t{3} << bits) / 4; }
+  // The table bits and arena capacity (in states) for `states` states and the slack.
+  std::uint32_t bits_for(std::uint64_t states) const;
+  std::uint64_t arena_states_for(std::uint64_t states) const;
   // The table with 2^bits slots, filled from the arena.
   void rebuild(std::uint32_t bits);
+  void update_room();
 
   std::uint32_t words_;
   std::uint32_t bits_ = 0; // m: 2^m slots
   std::uint64_t mask_ = 0; // 2^m - 1
-  std::uint64_t count_ = 0;
-  MappedVector<Word> arena_;
+  // Written by every insertion: on a cache line of its own, away from what every lookup
+  // reads. Read and written through counter().
+  alignas(64) std::uint64_t count_ = 0;
+  char count_line_[64 - sizeof(std::uint64_t)];
+  std::uint64_t room_ = 0; // find_or_insert inserts while size() < room_
+  std::uint64_t tables_built_ = 0;
+  std::uint64_t slack_ = 1;        // inserters
+  std::uint64_t arena_states_ = 0; // capacity counted as held, in states
+  std::size_t arena_bytes_ = 0;    // = arena_states_ * words * 8
+  MappedArray<Word> arena_;
   MappedArray<std::uint32_t> table_;
 };
 

@@ -1,8 +1,10 @@
-// Expansion (checker/expansion.hpp): a worker turns its chunk of the frontier into
-// candidates and edges to known states; the chunks of a level, expanded in parallel, give
-// what one worker gives.
+// Expansion (checker/expansion.hpp): a worker expands its chunk of the frontier and inserts
+// the successors itself, each new state keeping the step that found it first; edges to
+// known and to new states; the chunks of a level, expanded in parallel, find the same
+// states with the same keys as one worker.
 #include <catch2/catch.hpp>
 
+#include <map>
 #include <vector>
 
 #include "checker/expansion.hpp"
@@ -17,27 +19,49 @@ struct Setup {
   explicit Setup(tioa::Automaton automaton)
       : a(std::move(automaton)), generator(a), store(a.words()) {}
 
+  // A state of the frontier (the frontier is the ids added, in order).
   StateId add(const Words& state) {
-    const StateId id = store.insert(state.data(), hash_state(state.data(), a.words())).first;
-    frontier.push_back(id);
-    return id;
+    return store.insert(state.data(), hash_state(state.data(), a.words())).first;
   }
-  Level level(std::size_t workers = 1) {
-    return Level{generator, store, frontier, 0, workers, 0, progress, signals};
-  }
+  // One worker expands the frontier (every state stored so far), within `share`.
   template <class Hooks>
   Worker expand(const Hooks& hooks, std::size_t share = MemoryBudget::unlimited) {
     Worker w(a.words());
     w.clear();
     w.allowance.begin_level(w.bytes(), share);
-    w.expand(hooks, level(), 0, frontier.size(), true);
+    GrowthGate gate = begin(1);
+    w.expand(hooks, level(gate, 1), 0, first_new, true);
+    gate.leave();
     return w;
   }
+  // `workers` expand the frontier, as one level of an exploration.
+  template <class Hooks> void run(std::span<Worker> workers, const Hooks& hooks) {
+    GrowthGate gate = begin(workers.size());
+    MemoryBudget budget(0, [] { return std::size_t{0}; });
+    expand_level(workers, hooks, level(gate, workers.size()), budget);
+  }
+  GrowthGate begin(std::size_t workers) {
+    first_new = static_cast<StateId>(store.size());
+    store.set_inserters(static_cast<std::uint32_t>(workers));
+    discovery.begin(first_new);
+    discovery.make_room(store.id_limit());
+    return GrowthGate(workers, [this] {
+      store.make_room(64);
+      discovery.make_room(store.id_limit());
+      return true;
+    });
+  }
+  Level level(GrowthGate& gate, std::size_t workers) {
+    return Level{generator, store, discovery, gate, 0,        first_new,
+                 0,         0,     workers,   0,    progress, signals};
+  }
+  Words stored(StateId id) const { return Words(store.state(id), store.state(id) + a.words()); }
 
   tioa::Automaton a;
   tioa::SuccessorGenerator generator;
   StateStore store;
-  std::vector<StateId> frontier;
+  Discovery discovery;
+  StateId first_new = 0;
   Progress progress{false, ""};
   LevelSignals signals;
 };
@@ -49,112 +73,105 @@ Words flags(const tioa::Automaton& d, bool a, bool b) {
   });
 }
 
-Words at(const Worker& w, std::size_t c, std::uint32_t words) {
-  return Words(w.states[c], w.states[c] + words);
-}
-
 } // namespace
 
-TEST_CASE("expansion: successors not in the store become candidates, in order",
+TEST_CASE("expansion: successors not in the store are inserted, in order, with their keys",
           "[checker][expansion]") {
   Setup s(diamond());
   s.add(flags(s.a, false, false));
   const Worker w = s.expand(hooks());
-  REQUIRE(w.candidates.size() == 2);
-  CHECK(at(w, 0, s.a.words()) == flags(s.a, true, false)); // setA, then setB
-  CHECK(at(w, 1, s.a.words()) == flags(s.a, false, true));
-  CHECK(w.candidates[0].from == 0);
-  CHECK(w.candidates[0].duration == 1); // untimed: a step is a unit
-  CHECK(w.candidates[0].hash == hash_state(w.states[0], s.a.words()));
-  CHECK_FALSE(w.candidates[0].target);
+  REQUIRE(s.store.size() == 3);
+  CHECK(s.stored(1) == flags(s.a, true, false)); // setA, then setB
+  CHECK(s.stored(2) == flags(s.a, false, true));
+  CHECK(s.discovery.key_of(1) == Discovery::key(0, 0));
+  CHECK(s.discovery.key_of(2) == Discovery::key(0, 1));
   CHECK(w.edge_count == 2);
   CHECK(w.expanded == 1);
-  CHECK(w.edges.empty());
+  CHECK(w.known_edges.empty());
+  CHECK(w.new_edges.empty()); // edges only with record_edges
   CHECK(w.stuck.empty());
+  CHECK(w.targets.empty());
   CHECK_FALSE(w.error);
-  CHECK(s.store.size() == 1); // the store is only read
 }
 
 TEST_CASE("expansion: edges to known states, stuck states, and the hooks", "[checker][expansion]") {
   Setup s(diamond());
   s.add(flags(s.a, false, false));
-  const StateId known = s.add(flags(s.a, true, false));
-  s.frontier = {0};
-  SECTION("a successor in the store is an edge (recorded only with record_edges)") {
-    const Worker plain = s.expand(hooks());
-    CHECK(plain.candidates.size() == 1);
-    CHECK(plain.edges.empty());
-    CHECK(plain.edge_count == 2);
+  SECTION("edges to states stored before the level and to new ones, with record_edges") {
+    const StateId known = s.add(flags(s.a, true, false)); // in the frontier too
     const Worker w = s.expand(hooks().with_edges());
-    REQUIRE(w.edges.size() == 1);
-    CHECK(w.edges[0].from == 0);
-    CHECK(w.edges[0].target() == known);
-    CHECK(w.edges[0].duration() == 1);
-    CHECK(at(w, 0, s.a.words()) == flags(s.a, false, true));
+    // 00 -> 10 (known), 00 -> 01 (new: id 2), 10 -> 11 (new: id 3)
+    REQUIRE(w.known_edges.size() == 1);
+    CHECK(w.known_edges[0].from == 0);
+    CHECK(w.known_edges[0].target() == known);
+    CHECK(w.known_edges[0].duration() == 1); // untimed: a step is a unit
+    REQUIRE(w.new_edges.size() == 2);
+    CHECK(w.new_edges[0].from == 0);
+    CHECK(w.new_edges[0].target() == 2);
+    CHECK(w.new_edges[1].from == 1);
+    CHECK(w.new_edges[1].target() == 3);
+    CHECK(s.stored(2) == flags(s.a, false, true));
   }
   SECTION("a state with no successor is stuck") {
-    s.frontier = {s.add(flags(s.a, true, true))};
+    s.store.truncate(0);
+    const StateId stuck = s.add(flags(s.a, true, true));
     const Worker w = s.expand(hooks());
-    CHECK(w.stuck == std::vector<StateId>{s.frontier[0]});
+    CHECK(w.stuck == std::vector<StateId>{stuck});
     CHECK(w.expanded == 1);
     CHECK(w.edge_count == 0);
   }
   SECTION("expand: a state it refuses is skipped") {
     const Worker w = s.expand(hooks().with_expand([](const Word*) { return false; }));
     CHECK(w.expanded == 0);
-    CHECK(w.candidates.empty());
+    CHECK(s.store.size() == 1);
   }
-  SECTION("target: asked of each candidate") {
+  SECTION("target: asked of each new state") {
     const Words wanted = flags(s.a, false, true);
     const Worker w = s.expand(hooks().with_target(
         [&](const Word* state) { return std::equal(wanted.begin(), wanted.end(), state); }));
-    REQUIRE(w.candidates.size() == 1);
-    CHECK(w.candidates[0].target);
+    CHECK(w.targets == std::vector<StateId>{2});
   }
   SECTION("canonical: successors are replaced by their representative before the lookup") {
     const Words representative = flags(s.a, true, false);
-    const Worker w = s.expand(hooks().with_canonical(
+    s.expand(hooks().with_canonical(
         [&](Word* state) { std::copy(representative.begin(), representative.end(), state); }));
-    CHECK(w.candidates.empty()); // both successors are the known 10
+    CHECK(s.store.size() == 2); // both successors are 10
+    CHECK(s.discovery.key_of(1) == Discovery::key(0, 0));
   }
 }
 
 TEST_CASE("expansion: a worker grows only within its allowance", "[checker][expansion]") {
   Setup s(diamond());
   s.add(flags(s.a, false, false));
-  const Worker w = s.expand(hooks(), 0);
+  const Worker w = s.expand(hooks().with_edges(), 0);
   CHECK(s.signals.out_of_memory);
   CHECK(w.expanded == 0);
-  CHECK(w.candidates.capacity() == 0);
+  CHECK(w.known_edges.capacity() == 0);
+  CHECK(s.store.size() == 1);
 }
 
-TEST_CASE("expansion: a level cut into chunks gives what one worker gives, in order",
+TEST_CASE("expansion: a level cut into chunks finds what one worker finds, with the same keys",
           "[checker][expansion][threads]") {
-  // x = 6, 5, 4 stored; dec takes x to x - 1 and x - 2: candidates 3 (from 5 and 4), 2.
-  Setup s(countdown(6, true));
-  const tioa::Slot x = slot_of(s.a, "x");
-  auto number = [&](int value) {
-    return make_state(s.a, [&](State& st) { st.set_code(x, value); });
-  };
-  for (int value : {6, 5, 4})
-    s.add(number(value));
-  auto run = [&](std::size_t used) {
+  // x = 6000.. 1 stored; dec takes x to x - 1 and x - 2, so every new state (0 and -1 aside:
+  // x stays >= 0) is found again by a later chunk's state.
+  auto run = [](std::size_t used) {
+    Setup s(countdown(9000, true));
+    const tioa::Slot x = slot_of(s.a, "x");
+    for (int value = 9000; value >= 3000; --value)
+      s.add(make_state(s.a, [&](State& st) { st.set_code(x, value); }));
     std::vector<Worker> workers(used, Worker(s.a.words()));
-    MemoryBudget budget(0, [] { return std::size_t{0}; });
-    expand_level(std::span<Worker>(workers), hooks().with_edges(), s.level(used), budget);
-    std::vector<std::pair<StateId, Words>> candidates;
-    std::vector<Edge> edges;
-    for (const Worker& w : workers) {
-      for (std::size_t c = 0; c < w.candidates.size(); ++c)
-        candidates.emplace_back(w.candidates[c].from, at(w, c, s.a.words()));
-      edges.insert(edges.end(), w.edges.begin(), w.edges.end());
-    }
-    return std::make_pair(candidates, edges.size());
+    s.run(std::span<Worker>(workers), hooks().with_edges());
+    std::map<Words, std::uint64_t> keys;
+    for (StateId id = s.first_new; id < s.store.size(); ++id)
+      keys[s.stored(id)] = s.discovery.key_of(id);
+    std::uint64_t edges = 0;
+    for (const Worker& w : workers)
+      edges += w.known_edges.size() + w.new_edges.size();
+    return std::make_pair(keys, edges);
   };
   const auto one = run(1);
-  CHECK(one.first ==
-        std::vector<std::pair<StateId, Words>>{{1, number(3)}, {2, number(3)}, {2, number(2)}});
-  CHECK(one.second == 3); // 6 -> 5, 6 -> 4, 5 -> 4
+  CHECK(one.first.size() == 2); // 2999 and 2998
+  CHECK(one.second == 2 * 6001);
   CHECK(run(2) == one);
   CHECK(run(3) == one);
 }

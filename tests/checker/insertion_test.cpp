@@ -1,5 +1,5 @@
-// Insertion of one state (checker/insertion.hpp): new states get the next id, their parent
-// and a place in the level; the state and memory limits.
+// Insertion of one state (checker/insertion.hpp): new states get the next id and their
+// parent; the state and memory limits.
 #include <catch2/catch.hpp>
 
 #include <vector>
@@ -14,25 +14,21 @@ namespace {
 // One-word states: a state is its number.
 struct Run {
   Exploration ex{1};
-  std::vector<StateId> level;
   MemoryBudget budget;
   Insertion insertion;
 
-  explicit Run(std::uint64_t max_states = 0, std::uint64_t max_memory = 0,
-               bool record_edges = false)
-      : budget(max_memory,
-               [this] { return ex.memory_bytes() + level.capacity() * sizeof(StateId); }),
-        insertion(ex, budget, max_states, record_edges) {}
+  explicit Run(std::uint64_t max_states = 0, std::uint64_t max_memory = 0)
+      : budget(max_memory, [this] { return ex.memory_bytes(); }),
+        insertion(ex, budget, max_states) {}
 
   Insertion::Result insert(Word state, StateId parent) {
-    return insertion.insert(&state, hash_state(&state, 1), parent, level);
+    return insertion.insert(&state, hash_state(&state, 1), parent);
   }
 };
 
 } // namespace
 
-TEST_CASE("Insertion: a new state gets the next id, its parent and a place in the level",
-          "[checker][insertion]") {
+TEST_CASE("Insertion: a new state gets the next id and its parent", "[checker][insertion]") {
   Run run;
   const auto a = run.insert(7, no_parent);
   CHECK(a.outcome == Outcome::fresh);
@@ -45,8 +41,6 @@ TEST_CASE("Insertion: a new state gets the next id, its parent and a place in th
   CHECK(again.id == 0);
   CHECK(run.ex.store.size() == 2);
   CHECK(run.ex.parent == std::vector<StateId>{no_parent, 0}); // the first parent stays
-  CHECK(run.level == std::vector<StateId>{0, 1});
-  CHECK(run.ex.edge_list.capacity() == 0); // no room made for edges
 }
 
 TEST_CASE("Insertion: at the state limit only known states get in", "[checker][insertion]") {
@@ -56,11 +50,9 @@ TEST_CASE("Insertion: at the state limit only known states get in", "[checker][i
   CHECK(run.insert(2, 0).outcome == Outcome::known); // a space of exactly 2 states finishes
   CHECK(run.insert(3, 0).outcome == Outcome::state_limit);
   CHECK(run.ex.store.size() == 2);
-  CHECK(run.level.size() == 2);
 }
 
-TEST_CASE("Insertion: room for the state, its parent, its place and its edge within the "
-          "memory limit",
+TEST_CASE("Insertion: room for the state and its parent within the memory limit",
           "[checker][insertion]") {
   SECTION("the first state needs the store's first buffers") {
     Run free;
@@ -71,11 +63,5 @@ TEST_CASE("Insertion: room for the state, its parent, its place and its edge wit
     CHECK(run.ex.store.size() == 0);
     Run enough(0, free.budget.peak());
     CHECK(enough.insert(1, no_parent).outcome == Outcome::fresh);
-  }
-  SECTION("with record_edges, room for one edge is made too") {
-    Run run(0, 0, true);
-    run.insert(1, no_parent);
-    CHECK(run.ex.edge_list.capacity() >= 1);
-    CHECK(run.ex.edge_list.empty()); // the caller records it
   }
 }

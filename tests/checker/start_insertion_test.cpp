@@ -30,17 +30,16 @@ std::vector<Word> range(Word n) {
 
 struct Run {
   Exploration ex{1};
-  std::vector<StateId> level;
   MemoryBudget budget{0, [this] { return ex.memory_bytes(); }};
   Insertion insertion;
   std::vector<bool> batches; // after_batch(stopped), in order
 
-  explicit Run(std::uint64_t max_states = 0) : insertion(ex, budget, max_states, false) {}
+  explicit Run(std::uint64_t max_states = 0) : insertion(ex, budget, max_states) {}
 
   template <class Hooks>
   std::optional<StopReason> insert(const tioa::StartSet& start, const Hooks& hooks,
                                    std::optional<StopReason> after = std::nullopt) {
-    return insert_start_states(start, ex, hooks, insertion, level, [&](bool stopped) {
+    return insert_start_states(start, ex, hooks, insertion, [&](bool stopped) {
       batches.push_back(stopped);
       return after;
     });
@@ -54,7 +53,7 @@ TEST_CASE("start insertion: level 0 in enumeration order, duplicates once",
   Run run;
   CHECK_FALSE(run.insert(numbers({5, 3, 5, 8, 3}), hooks()));
   CHECK(run.ex.start_states == 3);
-  CHECK(run.level == std::vector<StateId>{0, 1, 2});
+  CHECK(run.ex.store.size() == 3);
   CHECK(*run.ex.store.state(0) == 5);
   CHECK(*run.ex.store.state(1) == 3);
   CHECK(*run.ex.store.state(2) == 8);

@@ -1,0 +1,87 @@
+#pragma once
+// Which step found each state of the level being built first. A step is keyed by
+//
+//   key = parent id << 32 | the step's index among the parent's successors
+//
+// and since the frontier is a range of ids in breadth-first order, a sequential
+// breadth-first search inserts the states of a level in the order of their smallest keys,
+// and takes each one's parent from it. When several workers insert concurrently, each
+// new state keeps the smallest key any worker found it with, and the level is renumbered
+// in key order afterwards (level_end.hpp): ids, parents and traces are then those of one
+// worker, whatever the number of workers.
+
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+#include "checker/mapped_memory.hpp"
+#include "checker/state_store.hpp"
+
+namespace checker {
+
+class Discovery {
+public:
+  static std::uint64_t key(StateId parent, std::uint64_t step) {
+    return (std::uint64_t{parent} << 32) | step;
+  }
+  static StateId parent_of(std::uint64_t key) { return static_cast<StateId>(key >> 32); }
+
+  // A new level: its states get ids from `first` on.
+  void begin(StateId first) {
+    first_ = first;
+    slots_valid_ = true;
+  }
+  StateId first() const { return first_; }
+
+  // Room for the keys of every id below `end`; while nobody writes keys.
+  void make_room(std::uint64_t end) {
+    if (end > first_) {
+      keys_.reserve(end - first_);
+      slots_.reserve(end - first_);
+    }
+  }
+  // What the keys of the states up to `size` (the store's) take.
+  std::size_t bytes(std::uint64_t size) const {
+    return size > first_ ? (size - first_) * (sizeof(std::uint64_t) + sizeof(std::uint32_t)) : 0;
+  }
+
+  // A new state, found first by the step `key`, placed in the store's table at `slot`.
+  void found(StateId id, std::uint64_t key, std::uint32_t slot) {
+    keys_[id - first_] = key;
+    slots_[id - first_] = slot;
+  }
+  // Where the store's table held the level's states when they were inserted; stale once
+  // the table has grown during the level (`slots_valid` false).
+  const std::uint32_t* slots() const { return slots_valid_ ? slots_.data() : nullptr; }
+  void forget_slots() { slots_valid_ = false; }
+  // A state of this level found again: it keeps the smaller key. `concurrent`: other
+  // threads may do the same at once.
+  void found_again(StateId id, std::uint64_t key, bool concurrent) {
+    std::uint64_t& slot = keys_[id - first_];
+    if (!concurrent) {
+      slot = std::min(slot, key);
+      return;
+    }
+    std::atomic_ref<std::uint64_t> shared(slot);
+    std::uint64_t seen = shared.load(std::memory_order_relaxed);
+    while (key < seen && !shared.compare_exchange_weak(seen, key, std::memory_order_relaxed)) {
+    }
+  }
+  std::uint64_t key_of(StateId id) const { return keys_[id - first_]; }
+
+  // The states first.. first + count - 1 in key order (the ids they had), given that their
+  // parents are in [parents_begin, parents_end). A counting sort by parent, then by step.
+  std::vector<StateId> order(std::uint64_t count, StateId parents_begin, StateId parents_end) const;
+  // What order() allocates.
+  static std::size_t order_bytes(std::uint64_t count, std::uint64_t parents) {
+    return (count + parents + 1) * sizeof(StateId);
+  }
+
+private:
+  StateId first_ = 0;
+  MappedArray<std::uint64_t> keys_;
+  MappedArray<std::uint32_t> slots_;
+  bool slots_valid_ = true;
+};
+
+} // namespace checker

@@ -1,0 +1,98 @@
+#include "checker/level_end.hpp"
+
+#include <algorithm>
+#include <vector>
+
+namespace checker {
+
+namespace {
+
+// What renumbering a level of `count` states allocates (the order, the new ids, the
+// store's slots and a copy of the level's states).
+std::size_t renumbering_bytes(std::uint64_t count, std::uint64_t parents, std::uint32_t words) {
+  return Discovery::order_bytes(count, parents) +
+         count * (2 * sizeof(StateId) + words * sizeof(Word));
+}
+
+} // namespace
+
+std::optional<StopReason> finish_level(std::span<const Worker> workers, const Level& level,
+                                       Exploration& ex, bool record_edges, MemoryBudget& budget) {
+  std::optional<StopReason> stop;
+  for (const Worker& w : workers) {
+    ex.edges += w.edge_count;
+    ex.expanded += w.expanded;
+  }
+  const StateId first = level.first_new();
+  const std::uint64_t count = ex.store.size() - first;
+  const Discovery& discovery = level.discovery;
+
+  // Breadth-first ids: the new id of the state that had id first + t (empty: the same).
+  std::vector<StateId> renumbered;
+  std::vector<StateId> order;
+  if (level.concurrent() && count > 1) {
+    if (budget.fits(renumbering_bytes(count, level.end - level.begin, ex.store.words()))) {
+      order = discovery.order(count, level.begin, level.end);
+      renumbered.resize(count);
+      for (std::size_t i = 0; i < count; ++i)
+        renumbered[order[i] - first] = static_cast<StateId>(first + i);
+    } else {
+      stop = StopReason::memory_limit; // the level keeps the ids it was inserted with
+    }
+  }
+  if (!budget.grow_within(ex.parent, count))
+    return StopReason::memory_limit;
+  for (std::size_t i = 0; i < count; ++i)
+    ex.parent.push_back(Discovery::parent_of(
+        discovery.key_of(order.empty() ? static_cast<StateId>(first + i) : order[i])));
+  if (!order.empty())
+    ex.store.reorder(first, order, discovery.slots());
+  auto new_id = [&](StateId id) {
+    return renumbered.empty() || id < first ? id : renumbered[id - first];
+  };
+
+  for (const Worker& w : workers) {
+    if (!budget.grow_within(ex.stuck, w.stuck.size()))
+      return StopReason::memory_limit;
+    ex.stuck.insert(ex.stuck.end(), w.stuck.begin(), w.stuck.end());
+  }
+  if (record_edges) {
+    for (const Worker& w : workers) {
+      if (!budget.grow_within(ex.edge_list, w.known_edges.size()))
+        return StopReason::memory_limit;
+      ex.edge_list.insert(ex.edge_list.end(), w.known_edges.begin(), w.known_edges.end());
+    }
+    for (const Worker& w : workers) {
+      if (!budget.grow_within(ex.edge_list, w.new_edges.size()))
+        return StopReason::memory_limit;
+      for (const Edge& e : w.new_edges)
+        ex.edge_list.push_back({e.from, edge_to(new_id(e.target()), e.duration())});
+    }
+  }
+
+  std::optional<StateId> found;
+  for (const Worker& w : workers)
+    for (StateId t : w.targets)
+      if (!found || new_id(t) < *found)
+        found = new_id(t);
+  if (found) {
+    // A sequential search stops at the target: what it would not have inserted goes.
+    ex.store.truncate(std::uint64_t{*found} + 1);
+    ex.parent.truncate(std::uint64_t{*found} + 1);
+    if (record_edges)
+      ex.edge_list.erase(std::remove_if(ex.edge_list.begin(), ex.edge_list.end(),
+                                        [&](const Edge& e) { return e.target() > *found; }),
+                         ex.edge_list.end());
+    ex.found = found;
+    return StopReason::found;
+  }
+  if (stop)
+    return stop;
+  if (level.signals.state_limit)
+    return StopReason::state_limit;
+  if (level.gate.stopped())
+    return StopReason::memory_limit;
+  return std::nullopt;
+}
+
+} // namespace checker
