@@ -7,13 +7,18 @@ namespace checker {
 std::vector<StateId> Discovery::order(std::uint64_t count, StateId parents_begin,
                                       StateId parents_end) const {
   std::vector<StateId> start(std::size_t{parents_end - parents_begin} + 1, 0);
+  std::uint64_t states = 0;
   for (std::uint64_t t = 0; t < count; ++t)
-    ++start[parent_of(keys_[t]) - parents_begin + 1];
+    if (keys_[t] != hole) {
+      ++start[parent_of(keys_[t]) - parents_begin + 1];
+      ++states;
+    }
   for (std::size_t p = 1; p < start.size(); ++p)
     start[p] += start[p - 1];
-  std::vector<StateId> order(count);
+  std::vector<StateId> order(states);
   for (std::uint64_t t = 0; t < count; ++t)
-    order[start[parent_of(keys_[t]) - parents_begin]++] = static_cast<StateId>(first_ + t);
+    if (keys_[t] != hole)
+      order[start[parent_of(keys_[t]) - parents_begin]++] = static_cast<StateId>(first_ + t);
   // Each parent's states, now together, by step (start[p] is where p's group ends).
   auto by_key = [&](StateId a, StateId b) { return key_of(a) < key_of(b); };
   StateId group = 0;

@@ -68,9 +68,16 @@ public:
     }
   }
   std::uint64_t key_of(StateId id) const { return keys_[id - first_]; }
+  // Ids from first on that no state has (yet): a worker's id block when it takes it.
+  void holes(std::uint64_t begin, std::uint64_t end) {
+    for (std::uint64_t id = begin; id < end; ++id)
+      keys_[id - first_] = hole;
+  }
+  static constexpr std::uint64_t hole = ~std::uint64_t{0};
 
-  // The states first.. first + count - 1 in key order (the ids they had), given that their
-  // parents are in [parents_begin, parents_end). A counting sort by parent, then by step.
+  // The states among ids first.. first + count - 1 (holes left out) in key order, given
+  // that their parents are in [parents_begin, parents_end). A counting sort by parent,
+  // then by step.
   std::vector<StateId> order(std::uint64_t count, StateId parents_begin, StateId parents_end) const;
   // What order() allocates.
   static std::size_t order_bytes(std::uint64_t count, std::uint64_t parents) {

@@ -25,6 +25,9 @@
 
 namespace checker {
 
+// Ids a worker of a concurrent level takes at a time.
+inline constexpr std::uint32_t id_block_size = 256;
+
 // What the workers of one level share (the signals, the gate, the discovery keys and the
 // store are written concurrently).
 struct Level {
@@ -41,6 +44,9 @@ struct Level {
   LevelSignals& signals;
 
   bool concurrent() const { return workers > 1; }
+  // The ids a worker takes at a time (see StateStore::IdBlock): one when it is alone, so
+  // that its ids are in breadth-first order already.
+  std::uint32_t id_block() const { return concurrent() ? id_block_size : 1; }
   // The first id of the level being built.
   StateId first_new() const { return discovery.first(); }
 };
@@ -67,6 +73,7 @@ public:
   std::vector<StateId> targets;  // new states that are targets
   std::uint64_t edge_count = 0;
   std::uint64_t expanded = 0;
+  StateStore::IdBlock ids; // the unused end is a hole in the level's ids
   std::exception_ptr error;
   Allowance allowance;
 
@@ -139,7 +146,9 @@ bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::u
       break;
     }
     const StateStore::Claim claim =
-        level.store.find_or_insert(succ, p.hash, [&](StateId id, std::uint32_t slot) {
+        level.store.find_or_insert(succ, p.hash, ids, [&](StateId id, std::uint32_t slot) {
+          if (id + ids.size == ids.end) // a new block: its other ids are holes until taken
+            level.discovery.holes(id + 1, ids.end);
           level.discovery.found(id, key, slot);
         });
     if (claim.kind == StateStore::Claim::Kind::full) {
@@ -166,6 +175,7 @@ void Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
                     bool calling_thread) {
   const std::uint32_t words = level.store.words();
   const bool record_edges = records_edges(hooks);
+  ids = {0, 0, level.id_block()};
   try {
     for (StateId id = begin; id < end; ++id) {
       if (((id - begin) & 1023) == 1023) {

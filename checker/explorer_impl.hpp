@@ -28,7 +28,7 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   const Limits& limits = options.limits;
   Exploration ex(generator.words());
   ex.threads = options.threads == 0 ? 1 : options.threads;
-  ex.store.set_inserters(ex.threads);
+  ex.store.set_inserters(ex.threads, id_block_size);
   Progress progress(options.progress, options.task.empty() ? "exploring" : options.task);
   std::vector<Worker> workers(ex.threads, Worker(generator.words()));
   Discovery discovery;
@@ -58,7 +58,10 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
     if (!budget.fits(ex.store.room_bytes(more)))
       return false;
     const std::uint64_t tables = ex.store.tables_built();
-    ex.store.make_room(more);
+    // The ids of the level's blocks that no state took yet are holes (discovery.hpp).
+    ex.store.make_room(more, [&](StateId id) {
+      return id < discovery.first() || discovery.key_of(id) != Discovery::hole;
+    });
     if (ex.store.tables_built() != tables) // the level's states moved in the table
       discovery.forget_slots();
     discovery.make_room(ex.store.id_limit());

@@ -24,29 +24,34 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
     ex.expanded += w.expanded;
   }
   const StateId first = level.first_new();
-  const std::uint64_t count = ex.store.size() - first;
-  const Discovery& discovery = level.discovery;
+  Discovery& discovery = level.discovery;
+  // With several workers, the ids of their blocks that no state took are holes
+  // (expansion.hpp marks a block's ids as holes when it takes it).
+  std::uint64_t count = ex.store.size() - first; // holes included, until renumbered
 
   // Breadth-first ids: the new id of the state that had id first + t (empty: the same).
   std::vector<StateId> renumbered;
   std::vector<StateId> order;
-  if (level.concurrent() && count > 1) {
-    if (budget.fits(renumbering_bytes(count, level.end - level.begin, ex.store.words()))) {
-      order = discovery.order(count, level.begin, level.end);
-      renumbered.resize(count);
-      for (std::size_t i = 0; i < count; ++i)
-        renumbered[order[i] - first] = static_cast<StateId>(first + i);
-    } else {
-      stop = StopReason::memory_limit; // the level keeps the ids it was inserted with
+  if (level.concurrent() && count > 0) {
+    // The level's holes must go whatever the memory limit says; past it, the run stops.
+    const std::size_t bytes = renumbering_bytes(count, level.end - level.begin, ex.store.words());
+    if (!budget.fits(bytes)) {
+      budget.note(budget.held() + bytes);
+      stop = StopReason::memory_limit;
     }
+    order = discovery.order(count, level.begin, level.end);
+    renumbered.resize(count);
+    for (std::size_t i = 0; i < order.size(); ++i)
+      renumbered[order[i] - first] = static_cast<StateId>(first + i);
+    count = order.size();
   }
+  if (level.concurrent())
+    ex.store.reorder(first, order, discovery.slots());
   if (!budget.grow_within(ex.parent, count))
     return StopReason::memory_limit;
   for (std::size_t i = 0; i < count; ++i)
     ex.parent.push_back(Discovery::parent_of(
-        discovery.key_of(order.empty() ? static_cast<StateId>(first + i) : order[i])));
-  if (!order.empty())
-    ex.store.reorder(first, order, discovery.slots());
+        discovery.key_of(level.concurrent() ? order[i] : static_cast<StateId>(first + i))));
   auto new_id = [&](StateId id) {
     return renumbered.empty() || id < first ? id : renumbered[id - first];
   };

@@ -20,15 +20,16 @@ StateStore::StateStore(std::uint32_t words) : words_(words) {
 
 std::pair<StateId, bool> StateStore::insert(const Word* state, std::uint64_t hash) {
   for (;;) {
-    const Claim claim = find_or_insert(state, hash, [](StateId, std::uint32_t) {});
+    IdBlock one;
+    const Claim claim = find_or_insert(state, hash, one, [](StateId, std::uint32_t) {});
     if (claim.kind != Claim::Kind::full)
       return {claim.id, claim.kind == Claim::Kind::fresh};
     make_room(1);
   }
 }
 
-void StateStore::set_inserters(std::uint32_t inserters) {
-  slack_ = std::max<std::uint32_t>(inserters, 1);
+void StateStore::set_inserters(std::uint32_t inserters, std::uint32_t block) {
+  slack_ = std::uint64_t{std::max<std::uint32_t>(inserters, 1)} * std::max<std::uint32_t>(block, 1);
   update_room();
 }
 
@@ -54,7 +55,7 @@ std::size_t StateStore::room_bytes(std::uint64_t more) const {
   return bytes;
 }
 
-void StateStore::make_room(std::uint64_t more) {
+void StateStore::make_room(std::uint64_t more, const std::function<bool(StateId)>& holds) {
   const std::uint64_t needed = size() + more + slack_;
   if (needed > max_states + slack_)
     throw std::length_error("state store is full (3 * 2^30 states)");
@@ -65,7 +66,7 @@ void StateStore::make_room(std::uint64_t more) {
     arena_bytes_ = arena_states * words_ * sizeof(Word);
   }
   if (const std::uint32_t bits = bits_for(needed); bits > bits_)
-    rebuild(bits);
+    rebuild(bits, holds);
   update_room();
 }
 
@@ -74,28 +75,35 @@ void StateStore::update_room() {
   room_ = fits > slack_ ? fits - slack_ : 0;
 }
 
-void StateStore::rebuild(std::uint32_t bits) {
+void StateStore::rebuild(std::uint32_t bits, const std::function<bool(StateId)>& holds) {
   ++tables_built_;
   table_.release();
   bits_ = bits;
   mask_ = (std::uint64_t{1} << bits) - 1;
   table_ = MappedArray<std::uint32_t>(mask_ + 1);
   const std::uint64_t count = size();
+  if (holds) { // some ids are holes: no prefetching ahead, it is rare
+    for (std::uint64_t id = 0; id < count; ++id)
+      if (holds(static_cast<StateId>(id)))
+        place(static_cast<StateId>(id), hash_of(id));
+    return;
+  }
   std::uint64_t ahead[rebuild_prefetch];
-  auto hash_of = [&](std::uint64_t id) {
-    return hash_state(state(static_cast<StateId>(id)), words_);
-  };
   for (std::uint64_t id = 0; id < std::min(count, rebuild_prefetch); ++id)
     prefetch(ahead[id] = hash_of(id));
   for (std::uint64_t id = 0; id < count; ++id) {
     const std::uint64_t hash = ahead[id % rebuild_prefetch];
     if (id + rebuild_prefetch < count)
       prefetch(ahead[id % rebuild_prefetch] = hash_of(id + rebuild_prefetch));
-    std::uint64_t at = hash & mask_;
-    while (table_[at] != 0)
-      at = (at + 1) & mask_;
-    table_[at] = static_cast<std::uint32_t>((tag_of(hash) << bits_) | (id + 1));
+    place(static_cast<StateId>(id), hash);
   }
+}
+
+void StateStore::place(StateId id, std::uint64_t hash) {
+  std::uint64_t at = hash & mask_;
+  while (table_[at] != 0)
+    at = (at + 1) & mask_;
+  table_[at] = static_cast<std::uint32_t>((tag_of(hash) << bits_) | (std::uint64_t{id} + 1));
 }
 
 void StateStore::truncate(std::uint64_t n) {
@@ -117,9 +125,9 @@ void StateStore::reorder(StateId first, std::span<const StateId> order,
   const std::size_t n = order.size();
   std::vector<std::uint32_t> found;
   if (!slots) {
-    found.resize(n);
-    for (std::size_t t = 0; t < n; ++t)
-      found[t] = slot_of(static_cast<StateId>(first + t));
+    found.resize(size() - first);
+    for (StateId id : order)
+      found[id - first] = slot_of(id);
     slots = found.data();
   }
   const auto id_bits = static_cast<std::uint32_t>(mask_);
@@ -130,7 +138,8 @@ void StateStore::reorder(StateId first, std::span<const StateId> order,
     slot = (slot & ~id_bits) | static_cast<std::uint32_t>(first + i + 1);
   }
   Word* level = arena_.data() + std::size_t{first} * words_;
-  const std::vector<Word> before(level, level + n * words_);
+  const std::vector<Word> before(level, level + (size() - first) * words_);
+  count_ = first + n;
   for (std::size_t i = 0; i < n; ++i)
     std::copy_n(before.data() + std::size_t{order[i] - first} * words_, words_, level + i * words_);
 }

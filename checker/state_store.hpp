@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <utility>
@@ -69,23 +70,36 @@ public:
     StateId id = 0; // when known or fresh
   };
 
-  // The state's id, inserting it when it is new; safe with other threads doing the same.
+  // The ids a thread hands to new states, taken from the store `size` at a time, so that
+  // threads do not write the same cache lines of the arena (and of arrays indexed by id)
+  // in turn. The ids of a block left unused are holes, which reorder() removes.
+  struct IdBlock {
+    std::uint64_t next = 0, end = 0;
+    std::uint32_t size = 1;
+  };
+
+  // The state's id, inserting it when it is new (with the next id of `ids`); safe with
+  // other threads doing the same, each with its own block.
   // `on_fresh(id, slot)` runs for a new state before other threads can find it (`slot`:
   // where the table holds it, until the table grows). `full`: there is
   // no room for one more state (make_room() first).
   template <class OnFresh>
-  Claim find_or_insert(const Word* state, std::uint64_t hash, OnFresh&& on_fresh) {
+  Claim find_or_insert(const Word* state, std::uint64_t hash, IdBlock& ids, OnFresh&& on_fresh) {
     const std::uint64_t tag = tag_of(hash);
     for (std::uint64_t at = hash & mask_;; at = (at + 1) & mask_) {
       std::uint32_t slot =
           std::atomic_ref<std::uint32_t>(table_[at]).load(std::memory_order_acquire);
       if (slot == 0) {
-        if (counter().load(std::memory_order_relaxed) >= room_)
+        if (ids.next == ids.end && counter().load(std::memory_order_relaxed) >= room_)
           return {Claim::Kind::full};
         const auto filling = static_cast<std::uint32_t>((tag << bits_) | mask_);
         if (std::atomic_ref<std::uint32_t>(table_[at])
                 .compare_exchange_strong(slot, filling, std::memory_order_acquire)) {
-          const auto id = static_cast<StateId>(counter().fetch_add(1, std::memory_order_relaxed));
+          if (ids.next == ids.end) {
+            ids.next = counter().fetch_add(ids.size, std::memory_order_relaxed);
+            ids.end = ids.next + ids.size;
+          }
+          const auto id = static_cast<StateId>(ids.next++);
           Word* to = arena_.data() + std::size_t{id} * words_;
           for (std::uint32_t i = 0; i < words_; ++i)
             to[i] = state[i];
@@ -110,13 +124,15 @@ public:
   // For one thread at a time: the id of the state, and whether it was new.
   std::pair<StateId, bool> insert(const Word* state, std::uint64_t hash);
 
-  // The room find_or_insert leaves for the threads that may pass its check at once (one
-  // each): at least as many as insert concurrently.
-  void set_inserters(std::uint32_t inserters);
+  // The room find_or_insert leaves for the threads that may pass its check at once (a
+  // block each): at least as many threads as insert concurrently, and their block size.
+  void set_inserters(std::uint32_t inserters, std::uint32_t block = 1);
   // Room for `more` states beyond size() (and for the inserters' slack): a bigger table,
   // a longer arena. While no thread uses the store. The bytes it would add first:
   std::size_t room_bytes(std::uint64_t more) const;
-  void make_room(std::uint64_t more);
+  // `holds(id)` says which ids below size() hold a state when some do not (the unused
+  // ids of blocks handed out during a level): only those go into a new table.
+  void make_room(std::uint64_t more, const std::function<bool(StateId)>& holds = {});
 
   // Every id find_or_insert may hand out before it says `full` is below this.
   std::uint64_t id_limit() const { return room_ + slack_; }
@@ -127,8 +143,8 @@ public:
   // Keeps the first `n` states (the rest are forgotten); while no thread uses the store.
   void truncate(std::uint64_t n);
   // Renumbers the states from `first` on: the state `order[i]` gets the id first + i
-  // (`order` is a permutation of first.. first + order.size() - 1, which must be size()).
-  // `slots[t]` is where the table holds the state first + t (nullptr: found here). While no
+  // (`order` holds every id from first on that is not a hole, in any order; the holes
+  // go). `slots[t]` is where the table holds the state first + t (nullptr: found here). While no
   // thread uses the store.
   void reorder(StateId first, std::span<const StateId> order, const std::uint32_t* slots);
   // Where the table holds the state `id` (stored); while nobody inserts.
@@ -168,9 +184,14 @@ private:
   // The table bits and arena capacity (in states) for `states` states and the slack.
   std::uint32_t bits_for(std::uint64_t states) const;
   std::uint64_t arena_states_for(std::uint64_t states) const;
-  // The table with 2^bits slots, filled from the arena.
-  void rebuild(std::uint32_t bits);
+  // The table with 2^bits slots, filled from the arena (the ids `holds`, all when empty).
+  void rebuild(std::uint32_t bits, const std::function<bool(StateId)>& holds = {});
   void update_room();
+  std::uint64_t hash_of(std::uint64_t id) const {
+    return hash_state(state(static_cast<StateId>(id)), words_);
+  }
+  // Puts `id` in the table (while nobody else uses it).
+  void place(StateId id, std::uint64_t hash);
 
   std::uint32_t words_;
   std::uint32_t bits_ = 0; // m: 2^m slots

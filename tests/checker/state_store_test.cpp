@@ -208,3 +208,46 @@ TEST_CASE("growth_bytes: what the next insert allocates, 0 when it allocates not
   }
   CHECK(growths > 4); // the arena and the table each grew a few times
 }
+
+TEST_CASE("find_or_insert hands out ids a block at a time; reorder renumbers and drops the holes",
+          "[checker][state_store]") {
+  StateStore store(1);
+  for (Word w = 0; w < 10; ++w)
+    insert(store, {w});
+  store.set_inserters(1, 4);
+  store.make_room(8);
+  StateStore::IdBlock ids{0, 0, 4};
+  std::vector<std::pair<StateId, std::uint32_t>> fresh;
+  for (Word w : {100, 101, 5}) {
+    const Words s{w};
+    const auto claim =
+        store.find_or_insert(s.data(), hash_state(s.data(), 1), ids,
+                             [&](StateId id, std::uint32_t slot) { fresh.emplace_back(id, slot); });
+    CHECK(claim.kind == (w == 5 ? StateStore::Claim::Kind::known : StateStore::Claim::Kind::fresh));
+  }
+  REQUIRE(fresh.size() == 2);
+  CHECK(fresh[0].first == 10);
+  CHECK(fresh[1].first == 11);
+  CHECK(store.size() == 14); // ids 12 and 13 are the block's unused end
+  CHECK(fresh[0].second == store.slot_of(10));
+  const std::vector<StateId> order{11, 10};
+  store.reorder(10, order, nullptr);
+  CHECK(store.size() == 12);
+  CHECK(stored(store, 10) == Words{101});
+  CHECK(stored(store, 11) == Words{100});
+  CHECK(find(store, {100}) == StateId{11});
+  CHECK(find(store, {101}) == StateId{10});
+  CHECK(find(store, {5}) == StateId{5});
+  CHECK(insert(store, {102}) == std::make_pair(StateId{12}, true));
+}
+
+TEST_CASE("truncate forgets the states after the first n", "[checker][state_store]") {
+  StateStore store(1);
+  for (Word w = 0; w < 3000; ++w)
+    insert(store, {w * 7});
+  store.truncate(1000);
+  CHECK(store.size() == 1000);
+  CHECK(find(store, {999 * 7}) == StateId{999});
+  CHECK_FALSE(find(store, {1000 * 7}));
+  CHECK(insert(store, {1000 * 7}) == std::make_pair(StateId{1000}, true));
+}
