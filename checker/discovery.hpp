@@ -45,11 +45,10 @@ public:
     return size > first_ ? (size - first_) * (sizeof(std::uint64_t) + sizeof(std::uint32_t)) : 0;
   }
 
-  // A new state, found first by the step `key`, placed in the store's table at `slot`.
-  void found(StateId id, std::uint64_t key, std::uint32_t slot) {
-    keys_[id - first_] = key;
-    slots_[id - first_] = slot;
-  }
+  // A new state, found first by the step `key`.
+  void found(StateId id, std::uint64_t key) { keys_[id - first_] = key; }
+  // ... placed in the store's table at `slot` (kept when the level is to be renumbered).
+  void placed(StateId id, std::uint32_t slot) { slots_[id - first_] = slot; }
   // Where the store's table held the level's states when they were inserted; stale once
   // the table has grown during the level (`slots_valid` false).
   const std::uint32_t* slots() const { return slots_valid_ ? slots_.data() : nullptr; }

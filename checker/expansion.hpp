@@ -33,7 +33,8 @@ inline constexpr std::uint32_t id_block_size = 256;
 struct Level {
   const tioa::SuccessorGenerator& generator;
   StateStore& store;
-  Discovery& discovery;
+  Discovery& discovery;          // with several workers
+  MappedVector<StateId>& parent; // written by a worker alone (room made at the gate)
   GrowthGate& gate;
   StateId begin, end;       // the frontier: ids begin.. end - 1
   std::uint64_t max_states; // 0: no limit
@@ -149,7 +150,12 @@ bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::u
         level.store.find_or_insert(succ, p.hash, ids, [&](StateId id, std::uint32_t slot) {
           if (id + ids.size == ids.end) // a new block: its other ids are holes until taken
             level.discovery.holes(id + 1, ids.end);
-          level.discovery.found(id, key, slot);
+          if (level.concurrent()) {
+            level.discovery.found(id, key);
+            level.discovery.placed(id, slot);
+          } else { // alone, in key order: the parent is known now
+            level.parent.push_back(from);
+          }
         });
     if (claim.kind == StateStore::Claim::Kind::full) {
       level.gate.request();
@@ -162,7 +168,7 @@ bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::u
   if (fresh) {
     if (is_target(hooks, succ))
       targets.push_back(to);
-  } else if (to >= level.first_new()) {
+  } else if (to >= level.first_new() && level.concurrent()) {
     level.discovery.found_again(to, key, level.concurrent());
   }
   if (records_edges(hooks))

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -53,18 +54,26 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
 
   // The store grows by an eighth at a time (and the discovery keys with it), while the
   // workers wait at the gate.
+  // A worker alone writes the parents as it inserts: room for as many as the store.
+  auto parents_room = [&] { return ex.store.id_limit() - ex.parent.size(); };
+  bool concurrent = false; // the level being expanded has several workers
   auto grow_store = [&] {
     const std::uint64_t more = std::max<std::uint64_t>(ex.store.size() / 8, 4096);
-    if (!budget.fits(ex.store.room_bytes(more)))
+    if (!budget.fits(ex.store.room_bytes(more) +
+                     ex.parent.growth_bytes(parents_room() + more + id_block_size)))
       return false;
     const std::uint64_t tables = ex.store.tables_built();
     // The ids of the level's blocks that no state took yet are holes (discovery.hpp).
-    ex.store.make_room(more, [&](StateId id) {
-      return id < discovery.first() || discovery.key_of(id) != Discovery::hole;
-    });
+    std::function<bool(StateId)> holds;
+    if (concurrent)
+      holds = [&](StateId id) {
+        return id < discovery.first() || discovery.key_of(id) != Discovery::hole;
+      };
+    ex.store.make_room(more, holds);
     if (ex.store.tables_built() != tables) // the level's states moved in the table
       discovery.forget_slots();
     discovery.make_room(ex.store.id_limit());
+    ex.parent.grow(parents_room());
     return true;
   };
   LevelSignals signals;
@@ -73,12 +82,17 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
     const StateId first = end;
     std::optional<StopReason> level_stop;
     for (std::size_t used = workers_for(end - begin, workers.size());;) {
+      concurrent = used > 1;
       discovery.begin(first);
       discovery.make_room(ex.store.id_limit());
+      if (!budget.grow_within(ex.parent, parents_room())) {
+        level_stop = StopReason::memory_limit;
+        break;
+      }
       GrowthGate gate(used, grow_store);
       const Level level{
-          generator, ex.store, discovery,          gate,     begin,  end, limits.max_states,
-          ex.depth,  used,     limits.max_seconds, progress, signals};
+          generator,         ex.store, discovery, ex.parent,          gate,     begin,  end,
+          limits.max_states, ex.depth, used,      limits.max_seconds, progress, signals};
       const std::span<Worker> active(workers.data(), used);
       expand_level(active, hooks, level, budget);
       if (signals.state_limit && used > 1 && !signals.out_of_time && !signals.out_of_memory) {

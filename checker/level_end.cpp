@@ -45,13 +45,13 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
       renumbered[order[i] - first] = static_cast<StateId>(first + i);
     count = order.size();
   }
-  if (level.concurrent())
+  if (level.concurrent()) { // (one worker wrote the parents as it inserted)
     ex.store.reorder(first, order, discovery.slots());
-  if (!budget.grow_within(ex.parent, count))
-    return StopReason::memory_limit;
-  for (std::size_t i = 0; i < count; ++i)
-    ex.parent.push_back(Discovery::parent_of(
-        discovery.key_of(level.concurrent() ? order[i] : static_cast<StateId>(first + i))));
+    if (!budget.grow_within(ex.parent, count))
+      return StopReason::memory_limit;
+    for (std::size_t i = 0; i < count; ++i)
+      ex.parent.push_back(Discovery::parent_of(discovery.key_of(order[i])));
+  }
   auto new_id = [&](StateId id) {
     return renumbered.empty() || id < first ? id : renumbered[id - first];
   };

@@ -4,8 +4,9 @@
 // first target found, if any, ends the run there. After it, ids, parents, counts, edges
 // and the target are those of a sequential breadth-first search, whatever the number of
 // workers:
-// - with one worker the states were inserted in key order already, so only the parents
-//   are written; with several, the level is renumbered in key order;
+// - with one worker the states were inserted in key order already, and it wrote their
+//   parents; with several, the level is renumbered in key order and the parents are
+//   taken from the keys;
 // - edges go in as a sequential search records them: first those to states stored before
 //   the level, then those to the level's new states, each in frontier order;
 // - the run stops at the target with the smallest id; the states after it are forgotten,

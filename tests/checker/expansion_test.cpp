@@ -21,7 +21,10 @@ struct Setup {
 
   // A state of the frontier (the frontier is the ids added, in order).
   StateId add(const Words& state) {
-    return store.insert(state.data(), hash_state(state.data(), a.words())).first;
+    const auto [id, fresh] = store.insert(state.data(), hash_state(state.data(), a.words()));
+    if (fresh)
+      parent.push_back(no_parent);
+    return id;
   }
   // One worker expands the frontier (every state stored so far), within `share`.
   template <class Hooks>
@@ -45,17 +48,22 @@ struct Setup {
     store.set_inserters(static_cast<std::uint32_t>(workers), id_block_size);
     discovery.begin(first_new);
     discovery.make_room(store.id_limit());
-    return GrowthGate(workers, [this] {
-      store.make_room(64, [this](StateId id) {
-        return id < discovery.first() || discovery.key_of(id) != Discovery::hole;
-      });
+    parent.grow(store.id_limit());
+    return GrowthGate(workers, [this, workers] {
+      std::function<bool(StateId)> holds;
+      if (workers > 1)
+        holds = [this](StateId id) {
+          return id < discovery.first() || discovery.key_of(id) != Discovery::hole;
+        };
+      store.make_room(64, holds);
+      parent.grow(store.id_limit());
       discovery.make_room(store.id_limit());
       return true;
     });
   }
   Level level(GrowthGate& gate, std::size_t workers) {
-    return Level{generator, store, discovery, gate, 0,        first_new,
-                 0,         0,     workers,   0,    progress, signals};
+    return Level{generator, store, discovery, parent, gate,     0,      first_new,
+                 0,         0,     workers,   0,      progress, signals};
   }
   Words stored(StateId id) const { return Words(store.state(id), store.state(id) + a.words()); }
 
@@ -63,6 +71,7 @@ struct Setup {
   tioa::SuccessorGenerator generator;
   StateStore store;
   Discovery discovery;
+  MappedVector<StateId> parent; // written by one worker alone
   StateId first_new = 0;
   Progress progress{false, ""};
   LevelSignals signals;
@@ -77,7 +86,7 @@ Words flags(const tioa::Automaton& d, bool a, bool b) {
 
 } // namespace
 
-TEST_CASE("expansion: successors not in the store are inserted, in order, with their keys",
+TEST_CASE("expansion: successors not in the store are inserted, in order, with their parents",
           "[checker][expansion]") {
   Setup s(diamond());
   s.add(flags(s.a, false, false));
@@ -85,8 +94,7 @@ TEST_CASE("expansion: successors not in the store are inserted, in order, with t
   REQUIRE(s.store.size() == 3);
   CHECK(s.stored(1) == flags(s.a, true, false)); // setA, then setB
   CHECK(s.stored(2) == flags(s.a, false, true));
-  CHECK(s.discovery.key_of(1) == Discovery::key(0, 0));
-  CHECK(s.discovery.key_of(2) == Discovery::key(0, 1));
+  CHECK(s.parent == std::vector<StateId>{no_parent, 0, 0}); // one worker writes them
   CHECK(w.edge_count == 2);
   CHECK(w.expanded == 1);
   CHECK(w.known_edges.empty());
@@ -138,7 +146,7 @@ TEST_CASE("expansion: edges to known states, stuck states, and the hooks", "[che
     s.expand(hooks().with_canonical(
         [&](Word* state) { std::copy(representative.begin(), representative.end(), state); }));
     CHECK(s.store.size() == 2); // both successors are 10
-    CHECK(s.discovery.key_of(1) == Discovery::key(0, 0));
+    CHECK(s.parent == std::vector<StateId>{no_parent, 0});
   }
 }
 
@@ -152,10 +160,10 @@ TEST_CASE("expansion: a worker grows only within its allowance", "[checker][expa
   CHECK(s.store.size() == 1);
 }
 
-TEST_CASE("expansion: a level cut into chunks finds what one worker finds, with the same keys",
+TEST_CASE("expansion: a level cut into chunks finds what one worker finds, with the same parents",
           "[checker][expansion][threads]") {
-  // x = 6000.. 1 stored; dec takes x to x - 1 and x - 2, so every new state (0 and -1 aside:
-  // x stays >= 0) is found again by a later chunk's state.
+  // x = 9000.. 3000 stored; dec takes x to x - 1 and x - 2: 2999 is found from 3001 (its
+  // first step) and from 3000, 2998 from 3000.
   auto run = [](std::size_t used) {
     Setup s(countdown(9000, true));
     const tioa::Slot x = slot_of(s.a, "x");
@@ -163,18 +171,23 @@ TEST_CASE("expansion: a level cut into chunks finds what one worker finds, with 
       s.add(make_state(s.a, [&](State& st) { st.set_code(x, value); }));
     std::vector<Worker> workers(used, Worker(s.a.words()));
     s.run(std::span<Worker>(workers), hooks().with_edges());
-    // Several workers leave the unused ends of their id blocks as holes.
-    std::map<Words, std::uint64_t> keys;
-    for (StateId id = s.first_new; id < s.store.size(); ++id)
-      if (s.discovery.key_of(id) != Discovery::hole)
-        keys[s.stored(id)] = s.discovery.key_of(id);
+    // One worker writes the parents; several keep the first step of each new state, and
+    // leave the ids of their blocks that no state took as holes.
+    std::map<Words, StateId> parents;
+    for (StateId id = s.first_new; id < s.store.size(); ++id) {
+      if (used == 1)
+        parents[s.stored(id)] = s.parent[id];
+      else if (s.discovery.key_of(id) != Discovery::hole)
+        parents[s.stored(id)] = Discovery::parent_of(s.discovery.key_of(id));
+    }
     std::uint64_t edges = 0;
     for (const Worker& w : workers)
       edges += w.known_edges.size() + w.new_edges.size();
-    return std::make_pair(keys, edges);
+    return std::make_pair(parents, edges);
   };
   const auto one = run(1);
-  CHECK(one.first.size() == 2); // 2999 and 2998
+  CHECK(one.first.size() == 2);
+  CHECK(one.first.begin()->second == 6000); // 2998's parent: 3000, the last of 6001
   CHECK(one.second == 2 * 6001);
   CHECK(run(2) == one);
   CHECK(run(3) == one);
