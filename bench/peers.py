@@ -242,12 +242,18 @@ def compile_steps(run, steps, cwd):
     return True
 
 
-def run_spin(inst, peers, work, timeout, expected):
-    run = Run("spin")
-    cwd = work / "spin" / inst.name
+def peer_run(checker, inst, suffix, peers, work):
+    """The run of one peer on one instance: its record, its directory, its model file."""
+    run = Run(checker)
+    cwd = work / checker / inst.name
     cwd.mkdir(parents=True, exist_ok=True)
-    model = model_file(inst, "_1p.pml", peers, work)
-    progress("[%s] spin: compiling %s" % (inst.name, model.name))
+    model = model_file(inst, suffix, peers, work)
+    progress("[%s] %s: compiling %s" % (inst.name, checker, model.name))
+    return run, cwd, model
+
+
+def run_spin(inst, peers, work, timeout, expected):
+    run, cwd, model = peer_run("spin", inst, "_1p.pml", peers, work)
     if not compile_steps(run, [
             ["spin", "-a", str(model)],
             ["gcc", "-O2", "-DSAFETY", "-DNOREDUCE", "-DVECTORSZ=1024", "-o", "pan", "pan.c"]],
@@ -280,11 +286,7 @@ def run_spin(inst, peers, work, timeout, expected):
 
 
 def run_rumur(inst, peers, work, timeout):
-    run = Run("rumur")
-    cwd = work / "rumur" / inst.name
-    cwd.mkdir(parents=True, exist_ok=True)
-    model = model_file(inst, ".m", peers, work)
-    progress("[%s] rumur: compiling %s" % (inst.name, model.name))
+    run, cwd, model = peer_run("rumur", inst, ".m", peers, work)
     if not compile_steps(run, [
             ["rumur", "--deadlock-detection", "off", "--threads", "1", str(model),
              "-o", "checker.c"],
