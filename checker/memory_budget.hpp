@@ -6,9 +6,10 @@
 // between checks. The peak is the most held at once as the limit counts it.
 //
 // MemoryBudget is the run's: it asks `held` (the store, the parents, the edges, the
-// frontiers and the workers' buffers) whenever something grows. During the expansion of
-// a level the store does not change and each worker has an Allowance instead: an equal
-// share of what is left, checked without asking anybody else.
+// discovery keys and the workers' buffers) whenever something grows. During the
+// expansion of a level the store grows only at the growth gate, where the budget is
+// asked while every worker waits; each worker's own buffers have an Allowance instead:
+// an equal share of what is left, checked without asking anybody else.
 
 #include <algorithm>
 #include <cstddef>

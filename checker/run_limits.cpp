@@ -11,15 +11,15 @@ std::optional<StopReason> time_or_memory_exceeded(const Limits& limits, const Pr
   return std::nullopt;
 }
 
-std::optional<StopReason> stop_after_level(std::optional<StopReason> merged,
+std::optional<StopReason> stop_after_level(std::optional<StopReason> ended,
                                            const LevelSignals& signals, const Limits& limits,
                                            const Progress& progress, const MemoryBudget& budget) {
   if (signals.out_of_time)
     return StopReason::time_limit;
   if (signals.out_of_memory)
     return StopReason::memory_limit;
-  if (merged)
-    return merged;
+  if (ended)
+    return ended;
   return time_or_memory_exceeded(limits, progress, budget);
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // The limits a run checks between the steps of the pipeline. The state limit is checked
-// at every insertion (insertion.hpp) and the memory limit at every growth
+// at every insertion (insertion.hpp, expansion.hpp) and the memory limit at every growth
 // (memory_budget.hpp); here, time and the memory held are checked after each batch of
 // start states and after each level, and the workers' reasons to stop early are weighed.
 
@@ -24,10 +24,10 @@ struct LevelSignals {
 std::optional<StopReason> time_or_memory_exceeded(const Limits& limits, const Progress& progress,
                                                   const MemoryBudget& budget);
 
-// Why the run stops after a level whose merge stopped for `merged` (none: the level was
-// merged whole); none when it goes on. A limit the workers met wins over the merge's
+// Why the run stops after a level whose end (level_end.hpp) gave `ended` (none: the level
+// went in whole); none when it goes on. A limit the workers met wins over the level end's
 // reason; time and memory are checked only when nothing stopped.
-std::optional<StopReason> stop_after_level(std::optional<StopReason> merged,
+std::optional<StopReason> stop_after_level(std::optional<StopReason> ended,
                                            const LevelSignals& signals, const Limits& limits,
                                            const Progress& progress, const MemoryBudget& budget);
 
