@@ -1,0 +1,66 @@
+// The same results for 1, 2 and 4 threads on the built-in models the token ring and
+// Fischer tests do not cover (theirs are in token_ring_test.cpp and fischer_test.cpp):
+// verdict, states, edges, worst time and the states of the trace.
+#include <catch2/catch.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "catalogue/builtin.hpp"
+#include "catalogue/registry.hpp"
+#include "checker/property.hpp"
+
+namespace {
+
+void same_for_every_thread_count(const std::string& model, const std::vector<std::string>& settings,
+                                 const std::vector<std::string>& properties) {
+  const auto& definition = catalogue::builtin_models().find(model);
+  const auto instance = definition.build(catalogue::resolve_params(definition, settings));
+  for (const std::string& name : properties) {
+    INFO(model << " " << name);
+    const checker::Property* spec = nullptr;
+    for (const auto& p : instance.properties)
+      if (p.name == name)
+        spec = &p;
+    REQUIRE(spec);
+    std::optional<checker::PropertyResult> first;
+    for (unsigned threads : {1u, 2u, 4u}) {
+      checker::ExploreOptions options;
+      options.threads = threads;
+      const checker::PropertyResult r = checker::run_property(instance.system, *spec, options);
+      if (!first) {
+        first = r;
+        continue;
+      }
+      CHECK(r.verdict == first->verdict);
+      CHECK(r.states == first->states);
+      CHECK(r.edges == first->edges);
+      CHECK(r.worst_time == first->worst_time);
+      CHECK(r.message == first->message);
+      REQUIRE(static_cast<bool>(r.trace) == static_cast<bool>(first->trace));
+      if (r.trace) {
+        REQUIRE(r.trace->steps.size() == first->trace->steps.size());
+        for (std::size_t i = 0; i < r.trace->steps.size(); ++i)
+          CHECK(r.trace->steps[i].state == first->trace->steps[i].state);
+      }
+    }
+  }
+}
+
+} // namespace
+
+// The cycle scenario is small (2,475 states: one worker per level); the larger ones take
+// seconds (bench/README.md).
+TEST_CASE("path-reservation: the same results for 1, 2 and 4 threads",
+          "[catalogue][path_reservation][threads]") {
+  same_for_every_thread_count("path-reservation", {"scenario=cycle"},
+                              {"mutual-exclusion", "integrity", "no-collision", "progress"});
+}
+
+TEST_CASE("vlayer-mc: the same results for 1, 2 and 4 threads", "[catalogue][vlayer_mc][threads]") {
+  // 1x2: LMC's 38,311 classes; 1x3: 32,134 states (levels of a few thousand states at
+  // most: the concurrent levels are tested on the peer models, checker/explorer_test.cpp).
+  same_for_every_thread_count("vlayer-mc", {}, {"lmc-closure"});
+  same_for_every_thread_count("vlayer-mc", {"cols=3"}, {"no-timelock", "l1mc-closure"});
+}
