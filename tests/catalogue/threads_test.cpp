@@ -1,6 +1,6 @@
-// The same results for 1, 2 and 4 threads on the built-in models the token ring and
-// Fischer tests do not cover (theirs are in token_ring_test.cpp and fischer_test.cpp):
-// verdict, states, edges, worst time and the states of the trace.
+// The same results for 1, 2 and 4 threads (same_result.hpp) on the built-in models the
+// token ring and Fischer tests do not cover (theirs are in token_ring_test.cpp and
+// fischer_test.cpp).
 #include <catch2/catch.hpp>
 
 #include <optional>
@@ -10,6 +10,7 @@
 #include "catalogue/builtin.hpp"
 #include "catalogue/registry.hpp"
 #include "checker/property.hpp"
+#include "tests/catalogue/same_result.hpp"
 
 namespace {
 
@@ -33,17 +34,7 @@ void same_for_every_thread_count(const std::string& model, const std::vector<std
         first = r;
         continue;
       }
-      CHECK(r.verdict == first->verdict);
-      CHECK(r.states == first->states);
-      CHECK(r.edges == first->edges);
-      CHECK(r.worst_time == first->worst_time);
-      CHECK(r.message == first->message);
-      REQUIRE(static_cast<bool>(r.trace) == static_cast<bool>(first->trace));
-      if (r.trace) {
-        REQUIRE(r.trace->steps.size() == first->trace->steps.size());
-        for (std::size_t i = 0; i < r.trace->steps.size(); ++i)
-          CHECK(r.trace->steps[i].state == first->trace->steps[i].state);
-      }
+      catalogue_test::check_same_result(r, *first);
     }
   }
 }
