@@ -32,7 +32,7 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
   // Breadth-first ids: the new id of the state that had id first + t (empty: the same).
   std::vector<StateId> renumbered;
   std::vector<StateId> order;
-  if (level.concurrent() && count > 0) {
+  if (level.concurrent()) { // (one worker inserted in key order and wrote the parents)
     // The level's holes must go whatever the memory limit says; past it, the run stops.
     const std::size_t bytes = renumbering_bytes(count, level.end - level.begin, ex.store.words());
     if (!budget.fits(bytes)) {
@@ -44,8 +44,6 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
     for (std::size_t i = 0; i < order.size(); ++i)
       renumbered[order[i] - first] = static_cast<StateId>(first + i);
     count = order.size();
-  }
-  if (level.concurrent()) { // (one worker wrote the parents as it inserted)
     ex.store.reorder(first, order, discovery.slots());
     if (!budget.grow_within(ex.parent, count))
       return StopReason::memory_limit;
