@@ -3,7 +3,8 @@
 
 For each instance (fischer-N with A=1 B=2, ring-N-K) it runs, one at a time:
 
-- tioa-check: `check MODEL --prop P --json -j THREADS`, where P is the model's invariant
+- tioa-check: `check MODEL --prop P --json --por off -j THREADS` (the full graph, as the peers
+  explore it), where P is the model's invariant
   (`mutex` for fischer, from the start state; `some-privileged` for the token ring, whose
   invariant check explores U(A), every one of the K^N valuations as a start state: the start
   set the peer models have);
@@ -195,7 +196,7 @@ def run_tioa(inst, tioa, threads, work, timeout):
     cwd = work / "tioa" / inst.name
     cwd.mkdir(parents=True, exist_ok=True)
     command = [str(tioa), "check", inst.model, "-p", inst.params, "--prop", inst.prop,
-               "--json", "--trace", "none", "-j", str(threads)]
+               "--json", "--trace", "none", "--por", "off", "-j", str(threads)]
     progress("[%s] tioa-check: %s" % (inst.name, " ".join(command)))
     code, out, err = measured(run, command, str(cwd), timeout)
     if code is None:

@@ -1,13 +1,20 @@
 // Deadlocks and time-locks: a reachable state where no action (and, in a timed system,
 // no tick) is possible. TIOA executions are expected to let time pass (seed 000 §3.1).
 
+#include <optional>
+
 #include "checker/checks.hpp"
+#include "checker/explorer.hpp"
 
 namespace checker {
 
 PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& options) {
   const tioa::SuccessorGenerator generator(system);
-  const Exploration ex = explore(generator, system.start(), options);
+  std::optional<ZeroTimeReduction> reduction;
+  if (options.por && generator.timed())
+    reduction.emplace(generator, tioa::StatePredicate{});
+  const Exploration ex =
+      explore(generator, system.start(), options, hooks(), reduction ? &*reduction : nullptr);
   PropertyResult r = result_of("deadlock", ex, generator);
   const char* what = generator.timed() ? "time-lock" : "deadlock";
   if (!ex.stuck.empty()) {

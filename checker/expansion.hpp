@@ -21,6 +21,7 @@
 #include "checker/progress.hpp"
 #include "checker/run_limits.hpp"
 #include "checker/state_buffer.hpp"
+#include "checker/zero_time_reduction.hpp"
 #include "tioa/successors.hpp"
 
 namespace checker {
@@ -43,6 +44,7 @@ struct Level {
   double max_seconds;  // 0: no time limit
   Progress& progress;  // drawn by the first worker only
   LevelSignals& signals;
+  const ZeroTimeReduction* reduction; // null: every successor
 
   bool concurrent() const { return workers > 1; }
   // The ids a worker takes at a time (see StateStore::IdBlock): one when it is alone, so
@@ -77,6 +79,7 @@ public:
   StateStore::IdBlock ids; // the unused end is a hole in the level's ids
   std::exception_ptr error;
   Allowance allowance;
+  ZeroTimeReduction::Scratch reduction; // with a reduction
 
   // What this worker holds.
   std::size_t bytes() const {
@@ -207,18 +210,30 @@ void Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
       // lookups below overlap their cache misses instead of waiting for each in turn.
       pending_states.clear();
       pending.clear();
-      const std::size_t n = level.generator.successors(
-          state, scratch.data(), [&](const Word* succ, const tioa::StepLabel& label) {
-            if (canonicalises(hooks)) {
-              std::copy(succ, succ + words, representative.begin());
-              canonicalise(hooks, representative.data());
-              succ = representative.data();
-            }
-            const std::uint64_t h = hash_state(succ, words);
-            level.store.prefetch(h);
-            pending_states.push(succ);
-            pending.push_back({h, level.generator.duration(label)});
-          });
+      auto take = [&](const Word* succ, std::uint32_t duration) {
+        if (canonicalises(hooks)) {
+          std::copy(succ, succ + words, representative.begin());
+          canonicalise(hooks, representative.data());
+          succ = representative.data();
+        }
+        const std::uint64_t h = hash_state(succ, words);
+        level.store.prefetch(h);
+        pending_states.push(succ);
+        pending.push_back({h, duration});
+      };
+      std::size_t n = 0;
+      const std::optional<std::size_t> reduced =
+          level.reduction ? level.reduction->reduce(state, reduction) : std::nullopt;
+      if (reduced) {
+        n = *reduced;
+        for (std::size_t k = 0; k < n; ++k)
+          take(reduction.successors.data() + k * words, reduction.durations[k]);
+      } else {
+        n = level.generator.successors(state, scratch.data(),
+                                       [&](const Word* succ, const tioa::StepLabel& label) {
+                                         take(succ, level.generator.duration(label));
+                                       });
+      }
       // Edges pile up in the level buffers, which grow only within this worker's share of
       // the memory left.
       if (!make_room(n, record_edges)) {

@@ -43,6 +43,8 @@ struct Exploration {
   std::vector<Edge> edge_list;  // when record_edges
   double seconds = 0;
   unsigned threads = 1;
+  bool reduction = false;           // zero-time steps reduced (zero_time_reduction.hpp)
+  std::uint64_t reduced_states = 0; // states expanded with fewer steps than were enabled
   // The most memory held at once as the memory limit counts it, reallocations included
   // (their old and new buffers together).
   std::size_t peak_memory_bytes = 0;

@@ -18,8 +18,10 @@ const char* describe(StopReason reason) {
 }
 
 template Exploration explore<NoHooks>(const tioa::SuccessorGenerator&, const tioa::StartSet&,
-                                      const ExploreOptions&, const NoHooks&);
+                                      const ExploreOptions&, const NoHooks&,
+                                      const ZeroTimeReduction*);
 template Exploration explore<ExploreHooks>(const tioa::SuccessorGenerator&, const tioa::StartSet&,
-                                           const ExploreOptions&, const ExploreHooks&);
+                                           const ExploreOptions&, const ExploreHooks&,
+                                           const ZeroTimeReduction*);
 
 } // namespace checker

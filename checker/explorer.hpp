@@ -25,14 +25,17 @@
 #include "checker/exploration.hpp"
 #include "checker/hooks.hpp"
 #include "checker/options.hpp"
+#include "checker/zero_time_reduction.hpp"
 #include "tioa/start_set.hpp"
 #include "tioa/successors.hpp"
 
 namespace checker {
 
+// With a `reduction`, states where time cannot pass are expanded by its stubborn sets.
 template <class Hooks = NoHooks>
 Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::StartSet& start,
-                    const ExploreOptions& options, const Hooks& hooks = {});
+                    const ExploreOptions& options, const Hooks& hooks = {},
+                    const ZeroTimeReduction* reduction = nullptr);
 
 } // namespace checker
 
@@ -41,9 +44,10 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
 namespace checker {
 
 extern template Exploration explore<NoHooks>(const tioa::SuccessorGenerator&, const tioa::StartSet&,
-                                             const ExploreOptions&, const NoHooks&);
+                                             const ExploreOptions&, const NoHooks&,
+                                             const ZeroTimeReduction*);
 extern template Exploration explore<ExploreHooks>(const tioa::SuccessorGenerator&,
                                                   const tioa::StartSet&, const ExploreOptions&,
-                                                  const ExploreHooks&);
+                                                  const ExploreHooks&, const ZeroTimeReduction*);
 
 } // namespace checker

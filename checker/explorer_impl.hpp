@@ -25,7 +25,8 @@ namespace checker {
 
 template <class Hooks>
 Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::StartSet& start,
-                    const ExploreOptions& options, const Hooks& hooks) {
+                    const ExploreOptions& options, const Hooks& hooks,
+                    const ZeroTimeReduction* reduction) {
   const Limits& limits = options.limits;
   Exploration ex(generator.words());
   ex.threads = options.threads == 0 ? 1 : options.threads;
@@ -91,8 +92,8 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
       }
       GrowthGate gate(used, grow_store);
       const Level level{
-          generator,         ex.store, discovery, ex.parent,          gate,     begin,  end,
-          limits.max_states, ex.depth, used,      limits.max_seconds, progress, signals};
+          generator,         ex.store, discovery, ex.parent,          gate,     begin,   end,
+          limits.max_states, ex.depth, used,      limits.max_seconds, progress, signals, reduction};
       const std::span<Worker> active(workers.data(), used);
       expand_level(active, hooks, level, budget);
       if (signals.state_limit && used > 1 && !signals.out_of_time && !signals.out_of_memory) {
@@ -115,6 +116,9 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   }
   if (stop)
     ex.stop = *stop;
+  ex.reduction = reduction != nullptr;
+  for (const Worker& w : workers)
+    ex.reduced_states += w.reduction.reduced;
   ex.peak_memory_bytes = budget.peak();
   ex.seconds = progress.elapsed();
   return ex;

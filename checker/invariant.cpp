@@ -1,13 +1,20 @@
+#include <optional>
+
 #include "checker/checks.hpp"
+#include "checker/explorer.hpp"
 
 namespace checker {
 
 PropertyResult check_invariant(const Automaton& system, const StatePredicate& invariant,
                                const ExploreOptions& options) {
   const tioa::SuccessorGenerator generator(system);
+  std::optional<ZeroTimeReduction> reduction;
+  if (options.por && generator.timed())
+    reduction.emplace(generator, invariant);
   const Exploration ex =
       explore(generator, system.start(), options,
-              hooks().with_target([&](const Word* s) { return !invariant(tioa::State(s, 0)); }));
+              hooks().with_target([&](const Word* s) { return !invariant(tioa::State(s, 0)); }),
+              reduction ? &*reduction : nullptr);
 
   PropertyResult r = result_of("invariant", ex, generator);
   if (ex.found) {
@@ -15,7 +22,8 @@ PropertyResult check_invariant(const Automaton& system, const StatePredicate& in
     r.trace = trace_to(generator, ex, *ex.found);
     r.trace_role = "counterexample";
     r.trace_kind = "invariant";
-    r.message = "a reachable state breaks the invariant; shortest trace: " +
+    r.message = std::string("a reachable state breaks the invariant; ") +
+                (ex.reduced_states > 0 ? "trace (of the reduced graph): " : "shortest trace: ") +
                 std::to_string(r.trace->length()) + " steps";
   } else if (!ex.complete()) {
     mark_incomplete(r, ex, "no violation in the states covered");

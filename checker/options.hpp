@@ -16,6 +16,9 @@ struct Limits {
 struct ExploreOptions {
   Limits limits;
   unsigned threads = 1;
+  // Partial-order reduction of zero-time steps (zero_time_reduction.hpp) in the checks
+  // where it is sound (invariants, deadlocks and time-locks of timed systems).
+  bool por = false;
   bool progress = false; // a progress line on stderr (only when it is a terminal)
   std::string task;      // shown in the progress line
 };

@@ -22,6 +22,8 @@ PropertyResult result_of(const std::string& kind, const Exploration& ex,
   r.depth = ex.depth;
   r.seconds = ex.seconds;
   r.threads = ex.threads;
+  r.por = ex.reduction;
+  r.reduced_states = ex.reduced_states;
   r.time_unit = generator.timed() ? "quanta" : "steps";
   return r;
 }

@@ -27,6 +27,8 @@ struct PropertyResult {
   std::uint32_t depth = 0;
   double seconds = 0;
   unsigned threads = 1;
+  bool por = false;                 // zero-time steps were reduced: counts are the reduced graph's
+  std::uint64_t reduced_states = 0; // states expanded with fewer steps than were enabled
 
   std::string time_unit; // "steps" or "quanta"
   std::optional<std::uint64_t> worst_time;

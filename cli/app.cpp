@@ -114,6 +114,13 @@ void add_run_options(CLI::App* command, RunSettings& settings, Limits& limits, s
   command->add_option("-j,--threads", settings.threads, "worker threads (default: all cores)")
       ->type_name("N")
       ->check(CLI::Range(1u, 4096u));
+  command
+      ->add_option_function<std::string>(
+          "--por", [&settings](const std::string& value) { settings.por = value == "on"; },
+          "partial-order reduction of zero-time steps where it is sound (invariants, deadlocks "
+          "and time-locks of timed models): on or off (default: on)")
+      ->type_name("on|off")
+      ->check(CLI::IsMember({"on", "off"}));
   command->add_option("--max-states", limits.max_states, "stop after N states (0: no limit)")
       ->type_name("N")
       ->check(whole_number());

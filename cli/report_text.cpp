@@ -105,6 +105,9 @@ void print_property_block(std::ostream& out, const ModelRun& run, const checker:
   out << "   " << r.message << '\n';
   out << fmt::format("   states {}  edges {}  depth {}  seconds {:.3f}  threads {}\n", r.states,
                      r.edges, r.depth, r.seconds, r.threads);
+  if (r.por && r.reduced_states > 0) // with none, the graph explored is the full one
+    out << "   zero-time steps reduced (--por on): " << r.reduced_states
+        << " states expanded in part; the counts are the reduced graph's\n";
   if (r.worst_time) {
     out << "   worst time: " << format_worst_time(r);
     if (r.last_time_outside)

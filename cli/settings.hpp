@@ -15,6 +15,7 @@ enum class TraceMode { text, json, none };
 
 struct RunSettings {
   unsigned threads = 1;
+  bool por = true; // --por on|off
   checker::Limits limits;
   bool json = false;
   std::string junit_path; // empty: no JUnit file

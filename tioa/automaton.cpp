@@ -25,6 +25,19 @@ TransitionBuilder& TransitionBuilder::choose(std::uint32_t count, ChoiceEffect e
   return choose([count](const State&, const Params&) { return count; }, std::move(effect));
 }
 
+TransitionBuilder& TransitionBuilder::footprint(FootprintFunction footprint) {
+  automaton_->transition(action_).footprint = std::move(footprint);
+  return *this;
+}
+
+void Automaton::footprint(std::size_t action, const Params& params, Footprint& f) const {
+  const Transition& t = transitions_.at(action);
+  if (t.footprint)
+    t.footprint(params, f);
+  else
+    f.whole(layout_.bits());
+}
+
 Automaton::Automaton(std::string name) : name_(std::move(name)) {
   if (name_.empty())
     throw ModelError("an automaton needs a name");

@@ -20,6 +20,7 @@
 
 #include "tioa/actions.hpp"
 #include "tioa/errors.hpp"
+#include "tioa/footprint.hpp"
 #include "tioa/start_set.hpp"
 #include "tioa/state.hpp"
 #include "tioa/variables.hpp"
@@ -34,10 +35,11 @@ using Evolve = std::function<void(State&)>;
 
 // The transition of one action: when it is enabled and what it does.
 struct Transition {
-  Guard precondition;         // empty: always enabled
-  Effect effect;              // deterministic effect (empty: no change), or
-  ChoiceEffect choice_effect; // one effect per choice, with
-  ChoiceCount choices;        // the number of choices in this state (empty: 1)
+  Guard precondition;          // empty: always enabled
+  Effect effect;               // deterministic effect (empty: no change), or
+  ChoiceEffect choice_effect;  // one effect per choice, with
+  ChoiceCount choices;         // the number of choices in this state (empty: 1)
+  FootprintFunction footprint; // what it may read and write (empty: the whole automaton)
 
   bool enabled(const State& s, const Params& p) const {
     return !precondition || precondition(s, p);
@@ -71,6 +73,8 @@ public:
   TransitionBuilder& eff(Effect effect);
   TransitionBuilder& choose(ChoiceCount count, ChoiceEffect effect);
   TransitionBuilder& choose(std::uint32_t count, ChoiceEffect effect);
+  // What the transition may read and write (tioa/footprint.hpp); without it, everything.
+  TransitionBuilder& footprint(FootprintFunction footprint);
 
 private:
   Automaton* automaton_;
@@ -151,6 +155,9 @@ public:
   const Trajectories& trajectory() const { return trajectories_; }
   bool timed() const { return trajectories_.timed; }
   std::optional<std::size_t> find_action(const std::string& name) const;
+  // Adds to `f` what the step of `action` with `params` may read and write: its declared
+  // footprint, or every variable of this automaton.
+  void footprint(std::size_t action, const Params& params, Footprint& f) const;
 
   // ---- used by the operators (compose, Fail, hide) that build automata from automata
   std::size_t add_action(ActionSignature signature, Transition transition);

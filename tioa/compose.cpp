@@ -22,6 +22,7 @@ struct Participant {
   ActionSignature signature;
   std::uint32_t base;
   std::string component;
+  std::uint32_t bits; // of the component's state: its default footprint
 };
 
 void check_compatible(const std::vector<Automaton>& components) {
@@ -79,6 +80,18 @@ Transition synchronised(std::vector<Participant> parts) {
       throw ModelError("input '" + part.signature.label(p) + "' is not enabled in component '" +
                        part.component + "' (TIOA requires input enabling)");
     part.transition.apply(local, p, choice);
+  };
+  // The step reads and writes what the parts that take part in it do.
+  t.footprint = [shared, receives](const Params& p, Footprint& f) {
+    for (const auto& part : *shared) {
+      if (!receives(part, p))
+        continue;
+      Footprint local = f.at(part.base);
+      if (part.transition.footprint)
+        part.transition.footprint(p, local);
+      else
+        local.whole(part.bits);
+    }
   };
   const bool deterministic =
       std::none_of(shared->begin(), shared->end(), [](const Participant& part) {
@@ -149,7 +162,8 @@ Automaton compose(const std::string& name, const std::vector<Automaton>& compone
       const Automaton& c = *placed[j].automaton;
       for (std::size_t b = 0; b < c.actions().size(); ++b)
         if (c.actions()[b].kind == ActionKind::input && c.actions()[b].name == action)
-          parts.push_back({c.transitions()[b], c.actions()[b], placed[j].base, c.name()});
+          parts.push_back(
+              {c.transitions()[b], c.actions()[b], placed[j].base, c.name(), c.layout().bits()});
     }
     return parts;
   };
@@ -161,7 +175,8 @@ Automaton compose(const std::string& name, const std::vector<Automaton>& compone
       const ActionSignature& sig = c.actions()[a];
       if (sig.kind == ActionKind::input)
         continue;
-      std::vector<Participant> parts{{c.transitions()[a], sig, placed[i].base, c.name()}};
+      std::vector<Participant> parts{
+          {c.transitions()[a], sig, placed[i].base, c.name(), c.layout().bits()}};
       if (sig.kind == ActionKind::output)
         for (auto& p : inputs_named(sig.name, i))
           parts.push_back(std::move(p));
@@ -213,7 +228,7 @@ Automaton compose(const std::string& name, const std::vector<Automaton>& compone
                             [&](const ActionSignature& o) { return o.contains(p); });
       };
       // The environment drives these: a dummy owner with no effect of its own.
-      Participant environment{Transition{}, merged, 0, "environment"};
+      Participant environment{Transition{}, merged, 0, "environment", 0};
       environment.signature.kind = ActionKind::internal;
       std::vector<Participant> all{environment};
       all.insert(all.end(), parts.begin(), parts.end());
@@ -236,9 +251,19 @@ Automaton compose(const std::string& name, const std::vector<Automaton>& compone
             }
         },
         [parts](const State& s) {
-          for (const auto& [traj, base] : *parts)
-            if (traj.stop_when && traj.stop_when(s.at(base)))
+          // Time stops while some part stops it: what the parts before it read did not
+          // decide that, so a traced evaluation forgets it.
+          State::TraceMark mark;
+          for (const auto& [traj, base] : *parts) {
+            if (!traj.stop_when)
+              continue;
+            if (s.trace())
+              s.mark_trace(mark);
+            if (traj.stop_when(s.at(base)))
               return true;
+            if (s.trace())
+              s.rewind_trace(mark);
+          }
           return false;
         });
   }

@@ -67,11 +67,24 @@ Automaton Fail(const Automaton& a, FailActions names) {
       if (!s[failed])
         original.apply(s, p, choice);
     };
+    t.footprint = [original, failed, bits](const Params& p, Footprint& f) {
+      f.reads(failed);
+      if (original.footprint)
+        original.footprint(p, f);
+      else
+        f.whole(bits);
+    };
     out.add_action(sig, std::move(t));
   }
 
-  out.input(names.fail).eff([failed](State& s, const Params&) { s[failed] = true; }); // rule (3)
-  out.input(names.restart)                                                            // rule (4)
+  out.input(names.fail) // rule (3)
+      .eff([failed](State& s, const Params&) { s[failed] = true; })
+      .footprint([failed](const Params&, Footprint& f) { f.writes(failed); });
+  out.input(names.restart) // rule (4)
+      .footprint([failed, bits](const Params&, Footprint& f) {
+        f.whole(bits);
+        f.reads(failed).writes(failed);
+      })
       .choose([failed, start_count](const State& s,
                                     const Params&) { return s[failed] ? start_count : 1u; },
               [failed, starts, bits, words](State& s, const Params&, std::uint32_t choice) {

@@ -2,10 +2,13 @@
 // A view on one automaton's part of a packed state. Transitions read and write variables
 // through it the way the papers' figures do: `s[loc[p]] = Loc::req`, `if (s[x] == 3)`.
 
+#include <algorithm>
+#include <array>
 #include <string>
 #include <type_traits>
 
 #include "tioa/errors.hpp"
+#include "tioa/footprint.hpp"
 #include "tioa/variables.hpp"
 
 namespace tioa {
@@ -28,16 +31,41 @@ private:
   const Slot& slot_;
 };
 
+// A state may trace its reads: every bit read through it is then set in `trace` (a mask of
+// `trace_words` words, as many as the state has), which tells partial-order reduction what
+// a guard looked at (tioa/footprint.hpp).
 class State {
 public:
-  State(Word* words, std::uint32_t base) : words_(words), base_(base) {}
-  State(const Word* words, std::uint32_t base) : words_(const_cast<Word*>(words)), base_(base) {}
+  State(Word* words, std::uint32_t base, Word* trace = nullptr, std::uint32_t trace_words = 0)
+      : words_(words), base_(base), trace_(trace), trace_words_(trace_words) {}
+  State(const Word* words, std::uint32_t base, Word* trace = nullptr, std::uint32_t trace_words = 0)
+      : words_(const_cast<Word*>(words)), base_(base), trace_(trace), trace_words_(trace_words) {}
 
   // The part of this state that belongs to a component placed `offset` bits further on.
-  State at(std::uint32_t offset) const { return State(words_, base_ + offset); }
+  State at(std::uint32_t offset) const {
+    return State(words_, base_ + offset, trace_, trace_words_);
+  }
+
+  // What has been traced so far, to forget the reads of a part of a disjunction that
+  // turned out false (its value did not decide the result). Traces longer than a mark
+  // holds are not rewound, which only keeps more reads than needed.
+  struct TraceMark {
+    static constexpr std::uint32_t capacity = 32;
+    std::array<Word, capacity> saved;
+  };
+  void mark_trace(TraceMark& mark) const {
+    if (trace_ && trace_words_ <= TraceMark::capacity)
+      std::copy(trace_, trace_ + trace_words_, mark.saved.begin());
+  }
+  void rewind_trace(const TraceMark& mark) const {
+    if (trace_ && trace_words_ <= TraceMark::capacity)
+      std::copy(mark.saved.begin(), mark.saved.begin() + trace_words_, trace_);
+  }
 
   std::uint64_t code(const Slot& slot) const {
     const std::uint32_t bit = base_ + slot.offset;
+    if (trace_) [[unlikely]]
+      set_bits(trace_, bit, slot.width);
     const std::uint32_t word = bit >> 6, shift = bit & 63;
     std::uint64_t value = words_[word] >> shift;
     if (shift + slot.width > 64) [[unlikely]]
@@ -99,10 +127,13 @@ public:
 
   Word* words() const { return words_; }
   std::uint32_t base() const { return base_; }
+  Word* trace() const { return trace_; }
 
 private:
   Word* words_;
   std::uint32_t base_;
+  Word* trace_;
+  std::uint32_t trace_words_;
 };
 
 template <class T> VariableRef<T>::operator T() const {

@@ -55,12 +55,19 @@ tioa::Automaton cn(const VlConfig& c, int p) {
           s.set_bottom(target);
         if (!s.is_bottom(target) && !reachable(m[0], s[target], m[1]))
           s.set_bottom(target);
+      })
+      .footprint([=](const Params&, tioa::Footprint& f) {
+        f.reads(x).reads(clock).reads(target);
+        f.writes(x).writes(clock).writes(v).writes(target);
       });
   a.output(names::vcast_cn_update(p), {{"l", 0, points - 1}})
       .pre([=](const State& s, const Params& m) { return cn_update_due(s) && m[0] == s[x]; })
       .eff([=](State& s, const Params&) {
         s[since] = 0;
         s.set_bottom(target);
+      })
+      .footprint([=](const Params&, tioa::Footprint& f) {
+        f.reads(clock).reads(since).reads(x).writes(since).writes(target);
       });
   a.input(names::vrcv_target_update(p), {{"u", 0, lattice.regions() - 1}, {"x", 0, points - 1}})
       .eff([=](State& s, const Params& m) {
@@ -70,10 +77,14 @@ tioa::Automaton cn(const VlConfig& c, int p) {
                        s[clock] > target_phase + arrival || !reachable(s[x], m[1], s[clock])))
           return;
         s[target] = m[1];
-      });
+      })
+      .footprint(
+          [=](const Params&, tioa::Footprint& f) { f.reads(x).reads(clock).writes(target); });
   a.output(names::velocity(p), {{"v", zero_velocity, points - 1}})
       .pre([=](const State& s, const Params& m) { return velocity_due(s) && m[0] == desired(s); })
-      .eff([=](State& s, const Params& m) { s[v] = m[0]; });
+      .eff([=](State& s, const Params& m) { s[v] = m[0]; })
+      .footprint(
+          [=](const Params&, tioa::Footprint& f) { f.reads(v).reads(x).reads(target).writes(v); });
 
   const int delta = c.delta, vmax = c.vmax;
   a.trajectories(

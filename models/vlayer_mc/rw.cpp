@@ -24,9 +24,13 @@ tioa::Automaton rw(const VlConfig& c) {
         .pre([=](const State& s, const Params& x) {
           return s[gps_age[p]] >= 1 && x[0] == s[loc[p]] && x[1] == s[now];
         })
-        .eff([=](State& s, const Params&) { s[gps_age[p]] = 0; });
+        .eff([=](State& s, const Params&) { s[gps_age[p]] = 0; })
+        .footprint([=](const Params&, tioa::Footprint& f) {
+          f.reads(gps_age[p]).reads(loc[p]).reads(now).writes(gps_age[p]);
+        });
     a.input(names::velocity(p), {{"v", zero_velocity, points - 1}})
-        .eff([=](State& s, const Params& x) { s[vel[p]] = x[0]; });
+        .eff([=](State& s, const Params& x) { s[vel[p]] = x[0]; })
+        .footprint([=](const Params&, tioa::Footprint& f) { f.writes(vel[p]); });
   }
 
   const int delta = c.delta, vmax = c.vmax, eps_sample = c.eps_sample;

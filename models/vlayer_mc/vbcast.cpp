@@ -32,28 +32,40 @@ tioa::Automaton vbcast(const VlConfig& c) {
 
   for (int p = 0; p < n; ++p) {
     a.input(names::gps_update(p), {{"l", 0, points - 1}, {"t", 0, c.delta - 1}})
-        .eff([=](State& s, const Params& x) { s[reg[p]] = lattice.region_of(x[0]); });
+        .eff([=](State& s, const Params& x) { s[reg[p]] = lattice.region_of(x[0]); })
+        .footprint([=](const Params&, tioa::Footprint& f) { f.writes(reg[p]); });
     a.input(names::vcast_prime_cn_update(p), {{"l", 0, points - 1}})
         .eff([=](State& s, const Params& x) {
           s[cn_pending[p]] =
               !s.is_bottom(reg[p]) && lattice.in_nbrs_plus(s[reg[p]], lattice.region_of(x[0]));
           s[cn_age[p]] = 0;
           s[cn_loc[p]] = x[0];
+        })
+        .footprint([=](const Params&, tioa::Footprint& f) {
+          f.reads(reg[p]).writes(cn_pending[p]).writes(cn_age[p]).writes(cn_loc[p]);
         });
   }
   for (int u = 0; u < regions; ++u) {
     const auto& nbrs = lattice.nbrs(u);
-    a.input(names::vcast_vn_update(u), {{"n", 0, n}}).eff([=](State& s, const Params& x) {
-      s[vn_mask[u]] = (1 << nbrs.size()) - 1;
-      s[vn_age[u]] = 0;
-      s[vn_count[u]] = x[0];
-    });
+    a.input(names::vcast_vn_update(u), {{"n", 0, n}})
+        .eff([=](State& s, const Params& x) {
+          s[vn_mask[u]] = (1 << nbrs.size()) - 1;
+          s[vn_age[u]] = 0;
+          s[vn_count[u]] = x[0];
+        })
+        .footprint([=](const Params&, tioa::Footprint& f) {
+          f.writes(vn_mask[u]).writes(vn_age[u]).writes(vn_count[u]);
+        });
     a.input(names::vcast_target_update(u), {{"p", 0, n - 1}, {"x", 0, points - 1}})
         .eff([=](State& s, const Params& x) {
           const int slot = u * n + x[0];
           s[tu_pending[slot]] = !s.is_bottom(reg[x[0]]) && lattice.in_nbrs_plus(u, s[reg[x[0]]]);
           s[tu_age[slot]] = 0;
           s[tu_target[slot]] = x[1];
+        })
+        .footprint([=](const Params& x, tioa::Footprint& f) {
+          const int slot = u * n + x[0];
+          f.reads(reg[x[0]]).writes(tu_pending[slot]).writes(tu_age[slot]).writes(tu_target[slot]);
         });
   }
 
@@ -66,6 +78,10 @@ tioa::Automaton vbcast(const VlConfig& c) {
         .eff([=](State& s, const Params& x) {
           s[cn_pending[x[0]]] = false;
           s[cn_age[x[0]]] = 0;
+        })
+        .footprint([=](const Params& x, tioa::Footprint& f) {
+          f.reads(cn_pending[x[0]]).reads(cn_loc[x[0]]);
+          f.writes(cn_pending[x[0]]).writes(cn_age[x[0]]);
         });
     a.output(names::vrcv_vn_update(v), {{"g", 0, regions - 1}, {"n", 0, n}})
         .pre([=](const State& s, const Params& x) {
@@ -80,6 +96,10 @@ tioa::Automaton vbcast(const VlConfig& c) {
           s[vn_mask[x[0]]] = s[vn_mask[x[0]]] & ~(1 << bit);
           if (s[vn_mask[x[0]]] == 0)
             s[vn_age[x[0]]] = 0;
+        })
+        .footprint([=](const Params& x, tioa::Footprint& f) {
+          f.reads(vn_mask[x[0]]).reads(vn_count[x[0]]);
+          f.writes(vn_mask[x[0]]).writes(vn_age[x[0]]);
         });
   }
   for (int p = 0; p < n; ++p)
@@ -92,6 +112,11 @@ tioa::Automaton vbcast(const VlConfig& c) {
           const int slot = x[0] * n + p;
           s[tu_pending[slot]] = false;
           s[tu_age[slot]] = 0;
+        })
+        .footprint([=](const Params& x, tioa::Footprint& f) {
+          const int slot = x[0] * n + p;
+          f.reads(tu_pending[slot]).reads(tu_target[slot]);
+          f.writes(tu_pending[slot]).writes(tu_age[slot]);
         });
 
   a.trajectories(

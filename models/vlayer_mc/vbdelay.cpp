@@ -15,16 +15,22 @@ tioa::Automaton vbdelay(const VlConfig& c, int p) {
   const auto held = a.boolean("held", false);
   const auto age = a.clock("age", std::max(e, 1), 0);
   const auto loc = a.integer("loc", 0, points - 1, 0);
-  a.input(names::vcast_cn_update(p), {{"l", 0, points - 1}}).eff([=](State& s, const Params& x) {
-    s[held] = true;
-    s[age] = 0;
-    s[loc] = x[0];
-  });
+  a.input(names::vcast_cn_update(p), {{"l", 0, points - 1}})
+      .eff([=](State& s, const Params& x) {
+        s[held] = true;
+        s[age] = 0;
+        s[loc] = x[0];
+      })
+      .footprint(
+          [=](const Params&, tioa::Footprint& f) { f.writes(held).writes(age).writes(loc); });
   a.output(names::vcast_prime_cn_update(p), {{"l", 0, points - 1}})
       .pre([=](const State& s, const Params& x) { return s[held] && x[0] == s[loc]; })
       .eff([=](State& s, const Params&) {
         s[held] = false;
         s[age] = 0;
+      })
+      .footprint([=](const Params&, tioa::Footprint& f) {
+        f.reads(held).reads(loc).writes(held).writes(age);
       });
   a.trajectories(
       [=](State& s) {

@@ -35,7 +35,9 @@ tioa::Automaton client_faults(const VlConfig& c, bool robot_faults) {
   tioa::Automaton a("ClientFaults");
   for (int p = 0; p < c.robots; ++p)
     for (const std::string& action : {names::fail_cn(p), names::restart_cn(p)})
-      a.output(action).pre([=](const tioa::State&, const tioa::Params&) { return robot_faults; });
+      a.output(action)
+          .pre([=](const tioa::State&, const tioa::Params&) { return robot_faults; })
+          .footprint([](const tioa::Params&, tioa::Footprint&) {});
   return a;
 }
 

@@ -50,30 +50,47 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
   // reachable without failures these are no-ops: the clock is right, cn-updates arrive by
   // e + d, and M is emptied at e + 2d + 2ε.
   const auto collecting = [=](int phase) { return phase <= vn_phase; };
-  a.input(names::time(u), {{"t", 0, c.delta - 1}}).eff([=](State& s, const Params& m) {
-    const bool wrong = !s.is_bottom(clock) && s[clock] != m[0];
-    s[clock] = m[0];
-    if (wrong || m[0] > target_phase)
-      for (int p = 0; p < n; ++p)
-        s.set_bottom(M[p]);
-  });
+  a.input(names::time(u), {{"t", 0, c.delta - 1}})
+      .eff([=](State& s, const Params& m) {
+        const bool wrong = !s.is_bottom(clock) && s[clock] != m[0];
+        s[clock] = m[0];
+        if (wrong || m[0] > target_phase)
+          for (int p = 0; p < n; ++p)
+            s.set_bottom(M[p]);
+      })
+      .footprint([=](const Params&, tioa::Footprint& f) {
+        f.reads(clock).writes(clock);
+        for (const auto& m : M)
+          f.writes(m);
+      });
   a.input(names::vrcv_cn_update(u), {{"p", 0, n - 1}, {"l", 0, points - 1}})
       .eff([=](State& s, const Params& m) {
         // D16: no clock, no round.
         if (!s.is_bottom(clock) && collecting(s[clock]) && lattice.region_of(m[1]) == u)
           s[M[m[0]]] = m[1];
-      });
+      })
+      .footprint([=](const Params& m, tioa::Footprint& f) { f.reads(clock).writes(M[m[0]]); });
   a.input(names::vrcv_vn_update(u), {{"g", 0, regions - 1}, {"n", 0, n}})
       .eff([=](State& s, const Params& m) {
         const auto at = std::find(nbrs.begin(), nbrs.end(), m[0]);
         if (at != nbrs.end())
           s[V.items[static_cast<std::size_t>(at - nbrs.begin())]] = m[1];
+      })
+      .footprint([=](const Params& m, tioa::Footprint& f) {
+        const auto at = std::find(nbrs.begin(), nbrs.end(), m[0]);
+        if (at != nbrs.end())
+          f.writes(V.items[static_cast<std::size_t>(at - nbrs.begin())]);
       });
   a.output(names::vcast_vn_update(u), {{"n", 0, n}})
       .pre([=](const State& s, const Params& m) {
         return at_phase(s, vn_phase) && m[0] == reported(s);
       })
-      .eff([=](State& s, const Params&) { s[since] = 0; });
+      .eff([=](State& s, const Params&) { s[since] = 0; })
+      .footprint([=](const Params&, tioa::Footprint& f) {
+        f.reads(clock).reads(since).writes(since);
+        for (const auto& m : M)
+          f.reads(m);
+      });
   const VlConfig config = c;
   a.internal("compute_" + std::to_string(u))
       .pre([=](const State& s, const Params&) { return at_phase(s, target_phase); })
@@ -96,12 +113,21 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
         for (const auto& count : V)
           s[count] = 0;
         s[since] = 0;
+      })
+      .footprint([=](const Params&, tioa::Footprint& f) {
+        f.reads(clock).reads(since).writes(since);
+        for (int p = 0; p < n; ++p)
+          f.reads(M[p]).writes(M[p]).writes(out[p]);
+        for (const auto& count : V)
+          f.reads(count).writes(count);
       });
   a.output(names::vcast_target_update(u), {{"p", 0, n - 1}, {"x", 0, points - 1}})
       .pre([=](const State& s, const Params& m) {
         return !s.is_bottom(out[m[0]]) && s[out[m[0]]] == m[1];
       })
-      .eff([=](State& s, const Params& m) { s.set_bottom(out[m[0]]); });
+      .eff([=](State& s, const Params& m) { s.set_bottom(out[m[0]]); })
+      .footprint(
+          [=](const Params& m, tioa::Footprint& f) { f.reads(out[m[0]]).writes(out[m[0]]); });
 
   const int delta = c.delta;
   a.trajectories(

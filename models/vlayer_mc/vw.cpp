@@ -15,11 +15,15 @@ tioa::Automaton vw(const VlConfig& c, bool vsa_faults) {
   for (int u = 0; u < regions; ++u) {
     a.output(names::time(u), {{"t", 0, c.delta - 1}})
         .pre([=](const State& s, const Params& x) { return s[age[u]] >= 1 && x[0] == s[now]; })
-        .eff([=](State& s, const Params&) { s[age[u]] = 0; });
+        .eff([=](State& s, const Params&) { s[age[u]] = 0; })
+        .footprint(
+            [=](const Params&, tioa::Footprint& f) { f.reads(age[u]).reads(now).writes(age[u]); });
     // VW owns fail_u and restart_u (line 577). Without vsa_faults they are outputs that are
     // never enabled, so Fail(VN_u)'s inputs are closed and never fire (finding F2).
     for (const std::string& action : {names::fail_vn(u), names::restart_vn(u)})
-      a.output(action).pre([=](const State&, const Params&) { return vsa_faults; });
+      a.output(action)
+          .pre([=](const State&, const Params&) { return vsa_faults; })
+          .footprint([](const Params&, tioa::Footprint&) {});
   }
   const int delta = c.delta, eps_sample = c.eps_sample;
   a.trajectories(
