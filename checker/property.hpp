@@ -13,6 +13,11 @@ enum class PropertyKind { invariant, legal_set, stabilisation, transitivity, dea
 
 const char* to_string(PropertyKind kind);
 
+// Whether properties of this kind may run on the fingerprint store (ExploreOptions::store):
+// invariants and deadlocks, whose checks read nothing of the search but its counts, its
+// parents and the states they keep (checks.hpp). Custom checks are not known to.
+bool runs_on_fingerprint_store(PropertyKind kind);
+
 struct Property {
   std::string name;
   std::string description;
@@ -25,6 +30,8 @@ struct Property {
   std::function<PropertyResult(const ExploreOptions&)> run = {};
 };
 
+// Throws std::invalid_argument for a property that cannot run on the store `options` ask
+// for (runs_on_fingerprint_store()).
 PropertyResult run_property(const Automaton& system, const Property& property,
                             const ExploreOptions& options);
 
