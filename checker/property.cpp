@@ -21,13 +21,14 @@ const char* to_string(PropertyKind kind) {
   }
 }
 
-bool runs_on_fingerprint_store(PropertyKind kind) {
-  return kind == PropertyKind::invariant || kind == PropertyKind::deadlock;
+bool runs_on_fingerprint_store(const Property& property) {
+  return property.kind == PropertyKind::invariant || property.kind == PropertyKind::deadlock ||
+         (property.kind == PropertyKind::custom && property.fingerprint_store);
 }
 
 PropertyResult run_property(const Automaton& system, const Property& property,
                             const ExploreOptions& options) {
-  if (options.store == StoreKind::fingerprint && !runs_on_fingerprint_store(property.kind))
+  if (options.store == StoreKind::fingerprint && !runs_on_fingerprint_store(property))
     throw std::invalid_argument("property '" + property.name + "' (" + to_string(property.kind) +
                                 ") cannot run on the fingerprint store: use the exact store");
   ExploreOptions named = options;

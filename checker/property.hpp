@@ -13,11 +13,6 @@ enum class PropertyKind { invariant, legal_set, stabilisation, transitivity, dea
 
 const char* to_string(PropertyKind kind);
 
-// Whether properties of this kind may run on the fingerprint store (ExploreOptions::store):
-// invariants and deadlocks, whose checks read nothing of the search but its counts, its
-// parents and the states they keep (checks.hpp). Custom checks are not known to.
-bool runs_on_fingerprint_store(PropertyKind kind);
-
 struct Property {
   std::string name;
   std::string description;
@@ -28,7 +23,15 @@ struct Property {
   std::string first_name;
   // custom: a check of its own (e.g. a lemma over a family of instances, proofs/).
   std::function<PropertyResult(const ExploreOptions&)> run = {};
+  // custom: whether `run` accepts the fingerprint store (it runs check_invariant or
+  // check_no_deadlock and reads nothing else of a search).
+  bool fingerprint_store = false;
 };
+
+// Whether the property may run on the fingerprint store (ExploreOptions::store):
+// invariants and deadlocks, whose checks read nothing of the search but its counts, its
+// parents and the states they keep (checks.hpp), and the custom checks that say so.
+bool runs_on_fingerprint_store(const Property& property);
 
 // Throws std::invalid_argument for a property that cannot run on the store `options` ask
 // for (runs_on_fingerprint_store()).

@@ -248,7 +248,12 @@ TEST_CASE("fingerprint store: the checks that read states or edges after the sea
 
   Property stabilisation{"convergence", "", PropertyKind::stabilisation, legal, "L", {}, ""};
   CHECK_THROWS_AS(run_property(ring.system, stabilisation, fp), std::invalid_argument);
-  CHECK_FALSE(runs_on_fingerprint_store(PropertyKind::custom));
-  CHECK(runs_on_fingerprint_store(PropertyKind::invariant));
-  CHECK(runs_on_fingerprint_store(PropertyKind::deadlock));
+  Property invariant{"some", "", PropertyKind::invariant, legal, "L", {}, ""};
+  Property deadlock{"no-deadlock", "", PropertyKind::deadlock, {}, "", {}, ""};
+  Property custom{"lemma", "", PropertyKind::custom, {}, "", {}, ""};
+  CHECK(runs_on_fingerprint_store(invariant));
+  CHECK(runs_on_fingerprint_store(deadlock));
+  CHECK_FALSE(runs_on_fingerprint_store(custom));
+  custom.fingerprint_store = true; // a custom check that runs check_no_deadlock, say
+  CHECK(runs_on_fingerprint_store(custom));
 }
