@@ -105,6 +105,9 @@ void print_property_block(std::ostream& out, const ModelRun& run, const checker:
   out << "   " << r.message << '\n';
   out << fmt::format("   states {}  edges {}  depth {}  seconds {:.3f}  threads {}\n", r.states,
                      r.edges, r.depth, r.seconds, r.threads);
+  if (r.omission_probability)
+    out << "   store: " << r.store << " (64-bit), omission probability ≤ "
+        << checker::format_probability(*r.omission_probability) << '\n';
   if (r.worst_time) {
     out << "   worst time: " << format_worst_time(r);
     if (r.last_time_outside)

@@ -15,6 +15,7 @@ enum class TraceMode { text, json, none };
 
 struct RunSettings {
   unsigned threads = 1;
+  checker::StoreKind store = checker::StoreKind::exact; // --store (check, explore)
   checker::Limits limits;
   bool json = false;
   std::string junit_path; // empty: no JUnit file
