@@ -129,13 +129,16 @@ ModelDefinition vlayer_mc_definition() {
           std::move(name), std::move(description), checker::PropertyKind::custom, {}, "", {}, "",
           std::move(run)};
     };
-    m.properties = {
+    checker::Property no_timelock =
         custom("no-timelock", "every reachable state has an action or a tick",
                [=](const checker::ExploreOptions& o) {
                  checker::PropertyResult r = checker::check_no_deadlock(system, o);
                  vlayer_mc::note_round_length(c, r);
                  return r;
-               }),
+               });
+    no_timelock.fingerprint_store = true; // check_no_deadlock alone
+    m.properties = {
+        std::move(no_timelock),
         custom("l1mc-closure", "L1MC is closed under steps and ticks (seed 000 Def 7.1, §7.1)",
                [=](const checker::ExploreOptions& o) {
                  return vlayer_mc::check_l1mc_closure(c, system, window, o);

@@ -27,8 +27,8 @@ PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& 
   } else if (!ex.complete()) {
     mark_incomplete(r, ex, std::string("no ") + what + " in the states covered");
   } else {
-    r.verdict = Verdict::holds;
-    r.message = std::string("no ") + what + " in " + std::to_string(r.states) + " reachable states";
+    mark_holds(r, ex,
+               std::string("no ") + what + " in " + std::to_string(r.states) + " reachable states");
   }
   return r;
 }

@@ -3,7 +3,9 @@
 // ids) in parallel and insert the successors into the store themselves, concurrently
 // (state_store.hpp); the store grows while they wait at the growth gate
 // (growth_gate.hpp). Each new state keeps the step that found it first (discovery.hpp), so
-// that level_end.hpp can number the level as a sequential search would.
+// that level_end.hpp can number the level as a sequential search would. On the
+// fingerprint store the frontier's states and the new ones are in level_states.hpp, and the
+// store is asked about fingerprints (insertion.hpp's store_key()).
 
 #include <cstddef>
 #include <cstdint>
@@ -17,6 +19,8 @@
 #include "checker/exploration.hpp"
 #include "checker/growth_gate.hpp"
 #include "checker/hooks.hpp"
+#include "checker/insertion.hpp"
+#include "checker/level_states.hpp"
 #include "checker/memory_budget.hpp"
 #include "checker/progress.hpp"
 #include "checker/run_limits.hpp"
@@ -45,6 +49,7 @@ struct Level {
   Progress& progress;  // drawn by the first worker only
   LevelSignals& signals;
   const ZeroTimeReduction* reduction; // null: every successor
+  LevelStates* states; // the fingerprint store's two levels (nullptr: the exact store)
 
   bool concurrent() const { return workers > 1; }
   // The ids a worker takes at a time (see StateStore::IdBlock): one when it is alone, so
@@ -52,6 +57,8 @@ struct Level {
   std::uint32_t id_block() const { return concurrent() ? id_block_size : 1; }
   // The first id of the level being built.
   StateId first_new() const { return discovery.first(); }
+  // A state of the frontier.
+  const Word* frontier(StateId id) const { return states ? states->frontier(id) : store.state(id); }
 };
 
 // Frontiers smaller than this are expanded by one worker.
@@ -113,7 +120,8 @@ public:
 
 private:
   struct Pending {
-    std::uint64_t hash;
+    std::uint64_t hash;        // of the key the store holds
+    std::uint64_t fingerprint; // (fingerprint store) the key
     std::uint32_t duration;
   };
   bool grow_room(std::size_t edge_room, std::size_t stuck_room);
@@ -132,6 +140,7 @@ template <class Hooks>
 bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::uint32_t step) {
   const Word* succ = pending_states[step];
   const Pending& p = pending[step];
+  const Word* key_words = level.states ? &p.fingerprint : succ;
   const std::uint64_t key = Discovery::key(from, step);
   StateId to = 0;
   bool fresh = false;
@@ -141,7 +150,7 @@ bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::u
     if (level.max_states && level.store.size() >= level.max_states) {
       // At the state limit only stored states are found; a new one ends the run, and the
       // level goes on for the counts.
-      const auto known = level.store.find(succ, p.hash);
+      const auto known = level.store.find(key_words, p.hash);
       if (!known) {
         level.signals.state_limit = true;
         return true;
@@ -150,7 +159,9 @@ bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::u
       break;
     }
     const StateStore::Claim claim =
-        level.store.find_or_insert(succ, p.hash, ids, [&](StateId id, std::uint32_t slot) {
+        level.store.find_or_insert(key_words, p.hash, ids, [&](StateId id, std::uint32_t slot) {
+          if (level.states)
+            level.states->put(id, succ);
           if (id + ids.size == ids.end) // a new block: its other ids are holes until taken
             level.discovery.holes(id + 1, ids.end);
           if (level.concurrent()) {
@@ -182,7 +193,7 @@ bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::u
 template <class Hooks>
 void Worker::expand(const Hooks& hooks, const Level& level, StateId begin, StateId end,
                     bool calling_thread) {
-  const std::uint32_t words = level.store.words();
+  const std::uint32_t words = level.generator.words();
   const bool record_edges = records_edges(hooks);
   ids = {0, 0, level.id_block()};
   try {
@@ -203,7 +214,7 @@ void Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
         if (level.signals.out_of_memory.load(std::memory_order_relaxed) || level.gate.stopped())
           return;
       }
-      const Word* state = level.store.state(id);
+      const Word* state = level.frontier(id);
       if (!expands(hooks, state))
         continue;
       // Generate every successor first and prefetch its slot in the store, so that the
@@ -216,10 +227,11 @@ void Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
           canonicalise(hooks, representative.data());
           succ = representative.data();
         }
-        const std::uint64_t h = hash_state(succ, words);
-        level.store.prefetch(h);
+        std::uint64_t fingerprint_of = 0;
+        const StoreKey key = store_key(succ, words, level.states != nullptr, fingerprint_of);
+        level.store.prefetch(key.hash);
         pending_states.push(succ);
-        pending.push_back({h, duration});
+        pending.push_back({key.hash, fingerprint_of, duration});
       };
       std::size_t n = 0;
       const std::optional<std::size_t> reduced =

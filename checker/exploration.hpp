@@ -1,6 +1,11 @@
 #pragma once
 // What an exploration produces: the store of reached states with their parents, the
 // counts, why it stopped, and (on request) its edges. See explorer.hpp.
+//
+// On the fingerprint store (fingerprint.hpp) `store` holds one fingerprint per state
+// (store.words() is 1), not the states: only trace_to() (trace.hpp) may rebuild states,
+// from the start set kept here, and the full states of the first target and of the
+// first stuck state are kept.
 
 #include <cstdint>
 #include <optional>
@@ -9,6 +14,7 @@
 #include "checker/mapped_memory.hpp"
 #include "checker/options.hpp"
 #include "checker/state_store.hpp"
+#include "tioa/start_set.hpp"
 
 namespace checker {
 
@@ -29,9 +35,12 @@ inline std::uint32_t edge_to(StateId to, std::uint32_t duration) {
 }
 
 struct Exploration {
-  explicit Exploration(std::uint32_t words) : store(words) {}
+  explicit Exploration(std::uint32_t words, StoreKind kind = StoreKind::exact)
+      : store(kind == StoreKind::fingerprint ? 1 : words), state_words(words), store_kind(kind) {}
 
   StateStore store;
+  std::uint32_t state_words; // of a state (store.words() is 1 on the fingerprint store)
+  StoreKind store_kind;
   MappedVector<StateId> parent; // no_parent for start states
   std::uint64_t start_states = 0;
   std::uint64_t edges = 0;
@@ -48,6 +57,13 @@ struct Exploration {
   // The most memory held at once as the memory limit counts it, reallocations included
   // (their old and new buffers together).
   std::size_t peak_memory_bytes = 0;
+
+  // The fingerprint store only: the start set (trace_to() enumerates it again), and the
+  // full states of `found` and of stuck.front(), when there are such.
+  std::optional<tioa::StartSet> start;
+  std::vector<Word> found_state, first_stuck_state;
+
+  bool fingerprints() const { return store_kind == StoreKind::fingerprint; }
 
   bool complete() const { return stop == StopReason::finished || stop == StopReason::found; }
   std::size_t memory_bytes() const {

@@ -17,6 +17,10 @@ const char* describe(StopReason reason) {
   }
 }
 
+const char* to_string(StoreKind kind) {
+  return kind == StoreKind::fingerprint ? "fingerprint" : "exact";
+}
+
 template Exploration explore<NoHooks>(const tioa::SuccessorGenerator&, const tioa::StartSet&,
                                       const ExploreOptions&, const NoHooks&,
                                       const ZeroTimeReduction*);

@@ -2,12 +2,15 @@
 // explore() (explorer.hpp) as the pipeline of its parts:
 //   start insertion -> per level: expansion (parallel, inserting) -> level end -> limits.
 // Included by explorer.hpp; explorer.cpp compiles it once for NoHooks and ExploreHooks.
+// On the fingerprint store (fingerprint.hpp) the same pipeline runs with fingerprints as
+// the store's keys and the full states of two levels in level_states.hpp.
 
 #include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "checker/discovery.hpp"
@@ -16,6 +19,7 @@
 #include "checker/growth_gate.hpp"
 #include "checker/insertion.hpp"
 #include "checker/level_end.hpp"
+#include "checker/level_states.hpp"
 #include "checker/memory_budget.hpp"
 #include "checker/progress.hpp"
 #include "checker/run_limits.hpp"
@@ -28,21 +32,42 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
                     const ExploreOptions& options, const Hooks& hooks,
                     const ZeroTimeReduction* reduction) {
   const Limits& limits = options.limits;
-  Exploration ex(generator.words());
+  const bool fingerprints = options.store == StoreKind::fingerprint;
+  // Representatives and edges are read as states after the run: the fingerprint store has
+  // none to read.
+  if (fingerprints && (canonicalises(hooks) || records_edges(hooks)))
+    throw std::invalid_argument("the fingerprint store keeps no states to canonicalise or "
+                                "edges to record: use the exact store");
+  Exploration ex(generator.words(), options.store);
+  if (fingerprints)
+    ex.start = start;
+  LevelStates level_states(generator.words());
+  LevelStates* const states = fingerprints ? &level_states : nullptr;
   ex.threads = options.threads == 0 ? 1 : options.threads;
   ex.store.set_inserters(ex.threads, id_block_size);
   Progress progress(options.progress, options.task.empty() ? "exploring" : options.task);
   std::vector<Worker> workers(ex.threads, Worker(generator.words()));
   Discovery discovery;
   // The memory limit counts the store, the parents, the edges, the discovery keys of the
-  // level being built and the workers' buffers.
+  // level being built, the workers' buffers and (fingerprint store) the two levels' states.
   MemoryBudget budget(limits.max_memory_bytes, [&] {
-    std::size_t bytes = ex.memory_bytes() + discovery.bytes(ex.store.size());
+    std::size_t bytes =
+        ex.memory_bytes() + discovery.bytes(ex.store.size()) + (states ? states->bytes() : 0);
     for (const Worker& w : workers)
       bytes += w.bytes();
     return bytes;
   });
-  Insertion insertion(ex, budget, limits.max_states);
+  Insertion insertion(ex, budget, limits.max_states, states);
+  // Room for the states of the level being built, up to the store's id limit (fingerprint
+  // store).
+  auto reserve_states = [&] {
+    if (!states)
+      return true;
+    if (!budget.fits(states->reserve_bytes(ex.store.id_limit())))
+      return false;
+    states->reserve(ex.store.id_limit());
+    return true;
+  };
 
   std::optional<StopReason> stop =
       insert_start_states(start, ex, hooks, insertion, [&](bool stopped) {
@@ -75,10 +100,12 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
       discovery.forget_slots();
     discovery.make_room(ex.store.id_limit());
     ex.parent.grow(parents_room());
-    return true;
+    return reserve_states();
   };
   LevelSignals signals;
   StateId begin = 0, end = static_cast<StateId>(ex.store.size());
+  if (states)
+    states->next_level(end);
   while (begin < end && !stop) {
     const StateId first = end;
     std::optional<StopReason> level_stop;
@@ -86,14 +113,26 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
       concurrent = used > 1;
       discovery.begin(first);
       discovery.make_room(ex.store.id_limit());
-      if (!budget.grow_within(ex.parent, parents_room())) {
+      if (!budget.grow_within(ex.parent, parents_room()) || !reserve_states()) {
         level_stop = StopReason::memory_limit;
         break;
       }
       GrowthGate gate(used, grow_store);
-      const Level level{
-          generator,         ex.store, discovery, ex.parent,          gate,     begin,   end,
-          limits.max_states, ex.depth, used,      limits.max_seconds, progress, signals, reduction};
+      const Level level{generator,
+                        ex.store,
+                        discovery,
+                        ex.parent,
+                        gate,
+                        begin,
+                        end,
+                        limits.max_states,
+                        ex.depth,
+                        used,
+                        limits.max_seconds,
+                        progress,
+                        signals,
+                        reduction,
+                        states};
       const std::span<Worker> active(workers.data(), used);
       expand_level(active, hooks, level, budget);
       if (signals.state_limit && used > 1 && !signals.out_of_time && !signals.out_of_memory) {
@@ -111,6 +150,8 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
     budget.note(budget.held());
     begin = end;
     end = static_cast<StateId>(ex.store.size());
+    if (states)
+      states->next_level(end - begin);
     ++ex.depth;
     progress.update(ex.store.size(), end - begin, ex.depth);
   }

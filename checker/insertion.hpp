@@ -1,15 +1,33 @@
 #pragma once
 // Insertion of one state into the store by one thread, within the state and memory
 // limits: how the start states enter an exploration (the workers of a level insert
-// concurrently, expansion.hpp). A new state gets the next id and its parent.
+// concurrently, expansion.hpp). A new state gets the next id and its parent. On the
+// fingerprint store the store is asked about the state's fingerprint (its key, see
+// store_key()), and a new state goes into the level being built (level_states.hpp).
 
 #include <cstdint>
 #include <vector>
 
 #include "checker/exploration.hpp"
+#include "checker/fingerprint.hpp"
+#include "checker/level_states.hpp"
 #include "checker/memory_budget.hpp"
 
 namespace checker {
+
+// What the store holds for a state: the state itself, or on the fingerprint store its
+// fingerprint (`fingerprint` is where it is kept); and the hash of that key.
+struct StoreKey {
+  const Word* words;
+  std::uint64_t hash;
+};
+inline StoreKey store_key(const Word* state, std::uint32_t words, bool fingerprints,
+                          std::uint64_t& fingerprint_of) {
+  if (!fingerprints)
+    return {state, hash_state(state, words)};
+  fingerprint_of = fingerprint(state, words);
+  return {&fingerprint_of, hash_state(&fingerprint_of, 1)};
+}
 
 class Insertion {
 public:
@@ -19,33 +37,48 @@ public:
     StateId id = 0; // when fresh or known
   };
 
-  // `max_states` 0 means none.
-  Insertion(Exploration& ex, MemoryBudget& budget, std::uint64_t max_states)
-      : ex_(ex), budget_(budget), max_states_(max_states) {}
+  // `max_states` 0 means none. `states`: the fingerprint store's level being built
+  // (nullptr: the exact store).
+  Insertion(Exploration& ex, MemoryBudget& budget, std::uint64_t max_states,
+            LevelStates* states = nullptr)
+      : ex_(ex), budget_(budget), max_states_(max_states), states_(states) {}
 
+  // The state, keyed by itself (the exact store).
   Result insert(const Word* state, std::uint64_t hash, StateId parent) {
+    return insert(state, StoreKey{state, hash}, parent);
+  }
+  // The state and its key in the store (store_key()).
+  Result insert(const Word* state, StoreKey key, StateId parent) {
     // At the state limit, a state that is not stored yet ends the run (incomplete); so a
     // space of exactly max_states states still finishes.
-    if (max_states_ && ex_.store.size() >= max_states_ && !ex_.store.find(state, hash))
+    if (max_states_ && ex_.store.size() >= max_states_ && !ex_.store.find(key.words, key.hash))
       return {Outcome::state_limit};
     if (!room())
       return {Outcome::memory_limit};
-    const auto [id, fresh] = ex_.store.insert(state, hash);
+    const auto [id, fresh] = ex_.store.insert(key.words, key.hash);
     if (!fresh)
       return {Outcome::known, id};
     ex_.parent.push_back(parent);
+    if (states_)
+      states_->put(id, state);
     return {Outcome::fresh, id};
   }
 
 private:
-  // Room for one more state in the store and its parent.
+  // Room for one more state in the store, its parent and (fingerprint store) its state.
   bool room() {
+    const std::uint64_t end = ex_.store.size() + 1;
+    if (states_ && !budget_.fits(states_->reserve_bytes(end)))
+      return false;
+    if (states_)
+      states_->reserve(end);
     return budget_.fits(ex_.store.growth_bytes()) && budget_.grow_within(ex_.parent, 1);
   }
 
   Exploration& ex_;
   MemoryBudget& budget_;
   std::uint64_t max_states_;
+  LevelStates* states_;
 };
 
 } // namespace checker

@@ -28,8 +28,7 @@ PropertyResult check_invariant(const Automaton& system, const StatePredicate& in
   } else if (!ex.complete()) {
     mark_incomplete(r, ex, "no violation in the states covered");
   } else {
-    r.verdict = Verdict::holds;
-    r.message = "all " + std::to_string(r.states) + " reachable states satisfy it";
+    mark_holds(r, ex, "all " + std::to_string(r.states) + " reachable states satisfy it");
   }
   return r;
 }

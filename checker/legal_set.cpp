@@ -12,6 +12,7 @@ struct StopEnumeration {};
 
 PropertyResult check_legal_set(const Automaton& system, const StatePredicate& legal,
                                const ExploreOptions& options) {
+  require_exact_store(options, "the legal-set check");
   const tioa::SuccessorGenerator generator(system);
   const std::uint32_t words = generator.words();
   const tioa::StartSet members =

@@ -34,7 +34,8 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
   std::vector<StateId> order;
   if (level.concurrent()) { // (one worker inserted in key order and wrote the parents)
     // The level's holes must go whatever the memory limit says; past it, the run stops.
-    const std::size_t bytes = renumbering_bytes(count, level.end - level.begin, ex.store.words());
+    const std::size_t bytes = renumbering_bytes(count, level.end - level.begin, ex.store.words()) +
+                              (level.states ? level.states->reorder_bytes(count) : 0);
     if (!budget.fits(bytes)) {
       budget.note(budget.held() + bytes);
       stop = StopReason::memory_limit;
@@ -43,6 +44,8 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
     renumbered.resize(count);
     for (std::size_t i = 0; i < order.size(); ++i)
       renumbered[order[i] - first] = static_cast<StateId>(first + i);
+    if (level.states)
+      level.states->reorder(order, count);
     count = order.size();
     ex.store.reorder(first, order, discovery.slots());
     if (!budget.grow_within(ex.parent, count))
@@ -57,6 +60,10 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
   for (const Worker& w : workers) {
     if (!budget.grow_within(ex.stuck, w.stuck.size()))
       return StopReason::memory_limit;
+    if (level.states && ex.stuck.empty() && !w.stuck.empty()) { // (the store has no states)
+      const Word* state = level.states->frontier(w.stuck.front());
+      ex.first_stuck_state.assign(state, state + ex.state_words);
+    }
     ex.stuck.insert(ex.stuck.end(), w.stuck.begin(), w.stuck.end());
   }
   if (record_edges) {
@@ -87,6 +94,9 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
                                         [&](const Edge& e) { return e.target() > *found; }),
                          ex.edge_list.end());
     ex.found = found;
+    if (level.states)
+      ex.found_state.assign(level.states->built(*found),
+                            level.states->built(*found) + ex.state_words);
     return StopReason::found;
   }
   if (stop)

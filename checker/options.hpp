@@ -13,12 +13,21 @@ struct Limits {
   std::uint64_t max_memory_bytes = 0;
 };
 
+// How the visited states are held. `exact`: every state in full (state_store.hpp).
+// `fingerprint`: a 64-bit fingerprint per state, and the full states of two levels only
+// (fingerprint.hpp): far fewer bytes per state for wide states, but two states with one
+// fingerprint count as one, so a search that finds nothing is not a proof (incomplete).
+enum class StoreKind { exact, fingerprint };
+
+const char* to_string(StoreKind kind); // "exact", "fingerprint"
+
 struct ExploreOptions {
   Limits limits;
   unsigned threads = 1;
   // Partial-order reduction of zero-time steps (zero_time_reduction.hpp) in the checks
   // where it is sound (invariants, deadlocks and time-locks of timed systems).
   bool por = false;
+  StoreKind store = StoreKind::exact;
   bool progress = false; // a progress line on stderr (only when it is a terminal)
   std::string task;      // shown in the progress line
 };

@@ -1,5 +1,7 @@
 #include "checker/property.hpp"
 
+#include <stdexcept>
+
 namespace checker {
 
 const char* to_string(PropertyKind kind) {
@@ -19,8 +21,16 @@ const char* to_string(PropertyKind kind) {
   }
 }
 
+bool runs_on_fingerprint_store(const Property& property) {
+  return property.kind == PropertyKind::invariant || property.kind == PropertyKind::deadlock ||
+         (property.kind == PropertyKind::custom && property.fingerprint_store);
+}
+
 PropertyResult run_property(const Automaton& system, const Property& property,
                             const ExploreOptions& options) {
+  if (options.store == StoreKind::fingerprint && !runs_on_fingerprint_store(property))
+    throw std::invalid_argument("property '" + property.name + "' (" + to_string(property.kind) +
+                                ") cannot run on the fingerprint store: use the exact store");
   ExploreOptions named = options;
   named.task = property.name;
   PropertyResult result;

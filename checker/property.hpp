@@ -23,8 +23,18 @@ struct Property {
   std::string first_name;
   // custom: a check of its own (e.g. a lemma over a family of instances, proofs/).
   std::function<PropertyResult(const ExploreOptions&)> run = {};
+  // custom: whether `run` accepts the fingerprint store (it runs check_invariant or
+  // check_no_deadlock and reads nothing else of a search).
+  bool fingerprint_store = false;
 };
 
+// Whether the property may run on the fingerprint store (ExploreOptions::store):
+// invariants and deadlocks, whose checks read nothing of the search but its counts, its
+// parents and the states they keep (checks.hpp), and the custom checks that say so.
+bool runs_on_fingerprint_store(const Property& property);
+
+// Throws std::invalid_argument for a property that cannot run on the store `options` ask
+// for (runs_on_fingerprint_store()).
 PropertyResult run_property(const Automaton& system, const Property& property,
                             const ExploreOptions& options);
 

@@ -1,5 +1,6 @@
 #include "checker/reach.hpp"
 
+#include "checker/checks.hpp"
 #include "checker/explorer.hpp"
 #include "tioa/errors.hpp"
 #include "tioa/operators.hpp"
@@ -7,6 +8,7 @@
 namespace checker {
 
 tioa::Automaton R(const tioa::Automaton& a, const ExploreOptions& options) {
+  require_exact_store(options, "R(" + a.name() + ")");
   const tioa::SuccessorGenerator generator(a);
   const Exploration ex = explore(generator, a.start(), options);
   if (!ex.complete())

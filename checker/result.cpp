@@ -1,5 +1,11 @@
 #include "checker/result.hpp"
 
+#include <cstdio>
+#include <stdexcept>
+
+#include "checker/checks.hpp"
+#include "checker/fingerprint.hpp"
+
 namespace checker {
 
 const char* to_string(Verdict verdict) {
@@ -24,6 +30,9 @@ PropertyResult result_of(const std::string& kind, const Exploration& ex,
   r.threads = ex.threads;
   r.por = ex.reduction;
   r.reduced_states = ex.reduced_states;
+  r.store = to_string(ex.store_kind);
+  if (ex.fingerprints())
+    r.omission_probability = omission_probability(ex.store.size());
   r.time_unit = generator.timed() ? "quanta" : "steps";
   return r;
 }
@@ -32,6 +41,33 @@ void mark_incomplete(PropertyResult& result, const Exploration& ex, const std::s
   result.verdict = Verdict::incomplete;
   result.message = std::string(describe(ex.stop)) + " after " + std::to_string(ex.store.size()) +
                    " states to depth " + std::to_string(ex.depth) + ": " + covered;
+}
+
+} // namespace checker
+
+namespace checker {
+
+void require_exact_store(const ExploreOptions& options, const std::string& check) {
+  if (options.store == StoreKind::fingerprint)
+    throw std::invalid_argument(check + " reads the states or edges after the search, which the "
+                                        "fingerprint store does not keep: use the exact store");
+}
+
+void mark_holds(PropertyResult& result, const Exploration& ex, const std::string& message) {
+  if (!ex.fingerprints()) {
+    result.verdict = Verdict::holds;
+    result.message = message;
+    return;
+  }
+  result.verdict = Verdict::incomplete;
+  result.message = "holds up to hash collisions, omission probability ≤ " +
+                   format_probability(omission_probability(ex.store.size())) + ": " + message;
+}
+
+std::string format_probability(double p) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g", p);
+  return text;
 }
 
 } // namespace checker

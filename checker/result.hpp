@@ -29,6 +29,9 @@ struct PropertyResult {
   unsigned threads = 1;
   bool por = false;                 // zero-time steps were reduced: counts are the reduced graph's
   std::uint64_t reduced_states = 0; // states expanded with fewer steps than were enabled
+  std::string store = "exact";      // how the visited states were held: "exact" or "fingerprint"
+  // The fingerprint store only: the probability that a state was missed (fingerprint.hpp).
+  std::optional<double> omission_probability;
 
   std::string time_unit; // "steps" or "quanta"
   std::optional<std::uint64_t> worst_time;
@@ -42,11 +45,20 @@ struct PropertyResult {
 };
 
 // A result of `kind` with the figures of an exploration: states, edges, depth, seconds,
-// threads, and the unit of time of the generator ("quanta" timed, "steps" untimed).
+// threads, the store (and on the fingerprint store the omission probability), and the unit
+// of time of the generator ("quanta" timed, "steps" untimed).
 PropertyResult result_of(const std::string& kind, const Exploration& ex,
                          const tioa::SuccessorGenerator& generator);
 
 // Sets verdict and message for a run that stopped on a limit.
 void mark_incomplete(PropertyResult& result, const Exploration& ex, const std::string& covered);
+
+// Sets verdict and message for a run that finished and found no violation: holds, with
+// `message`; on the fingerprint store incomplete, "holds up to hash collisions, omission
+// probability ≤ p: " and `message` (a state may have been missed).
+void mark_holds(PropertyResult& result, const Exploration& ex, const std::string& message);
+
+// The omission probability as the reports print it ("3.3e-06").
+std::string format_probability(double p);
 
 } // namespace checker

@@ -341,6 +341,7 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
 
 PropertyResult check_stabilisation(const Automaton& system, const StatePredicate& legal,
                                    const StatePredicate& settled, const ExploreOptions& options) {
+  require_exact_store(options, "the stabilisation check");
   const tioa::SuccessorGenerator gen(system);
   ExploreHooks hooks;
   hooks.record_edges = true;

@@ -26,17 +26,18 @@ std::optional<StopReason> insert_start_states(const tioa::StartSet& start, Explo
                                               const Hooks& hooks, Insertion& insertion,
                                               AfterBatch&& after_batch) {
   struct StopEnumeration {};
-  const std::uint32_t words = ex.store.words();
+  const std::uint32_t words = ex.state_words;
   std::optional<StopReason> stop;
   std::vector<Word> buffer(words + 1, 0), representative(words + 1, 0);
   std::vector<Word> batch;
-  std::vector<std::uint64_t> hashes;
+  std::vector<std::uint64_t> hashes, fingerprints; // (the fingerprint store's keys)
   auto insert_batch = [&] {
     for (std::size_t b = 0; b < hashes.size(); ++b)
       ex.store.prefetch(hashes[b]);
     for (std::size_t b = 0; b < hashes.size() && !stop; ++b) {
       const Word* state = batch.data() + b * words;
-      const auto [outcome, id] = insertion.insert(state, hashes[b], no_parent);
+      const StoreKey key{ex.fingerprints() ? &fingerprints[b] : state, hashes[b]};
+      const auto [outcome, id] = insertion.insert(state, key, no_parent);
       if (outcome == Insertion::Outcome::state_limit) {
         stop = StopReason::state_limit;
       } else if (outcome == Insertion::Outcome::memory_limit) {
@@ -45,12 +46,15 @@ std::optional<StopReason> insert_start_states(const tioa::StartSet& start, Explo
         ++ex.start_states;
         if (is_target(hooks, state)) {
           ex.found = id;
+          if (ex.fingerprints())
+            ex.found_state.assign(state, state + words);
           stop = StopReason::found;
         }
       }
     }
     batch.clear();
     hashes.clear();
+    fingerprints.clear();
     if (const auto reason = after_batch(stop.has_value()); reason && !stop)
       stop = reason;
   };
@@ -63,7 +67,9 @@ std::optional<StopReason> insert_start_states(const tioa::StartSet& start, Explo
         state = representative.data();
       }
       batch.insert(batch.end(), state, state + words);
-      hashes.push_back(hash_state(state, words));
+      std::uint64_t fingerprint_of = 0;
+      hashes.push_back(store_key(state, words, ex.fingerprints(), fingerprint_of).hash);
+      fingerprints.push_back(fingerprint_of);
       if (hashes.size() == start_batch) {
         insert_batch();
         if (stop)

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
+
+#include "checker/fingerprint.hpp"
 
 namespace checker {
 
@@ -29,6 +32,62 @@ std::vector<Step> steps_between(const tioa::SuccessorGenerator& generator, const
   return found;
 }
 
+// The states along `path` (ids from a start state) of a run on the fingerprint store,
+// rebuilt by re-execution: the start state is the first of the start set with the
+// fingerprint of path[0] (the one that got the id), and each next state a successor of the
+// last with the fingerprint of the next id. Only two states with one fingerprint can make a
+// choice wrong, so the search backtracks over the candidates in the generator's order (a
+// wrong one would soon have no successor with the next fingerprint); the last state must
+// be `last` when it is known. Throws if no path fits, which a collision alone cannot
+// cause.
+std::vector<std::vector<Word>> reexecute(const tioa::SuccessorGenerator& generator,
+                                         const Exploration& ex, const std::vector<StateId>& path,
+                                         const std::vector<Word>& last) {
+  const std::uint32_t words = generator.words();
+  auto fingerprint_of = [&](StateId id) { return ex.store.state(id)[0]; };
+  std::vector<std::vector<Word>> states;
+  // Depth-first over the candidates; true when states holds the whole path.
+  auto extend_from = [&](auto& self, std::size_t i) -> bool {
+    if (i + 1 == path.size())
+      return last.empty() || states.back() == last;
+    std::vector<Word> from(states.back());
+    from.push_back(0);
+    std::vector<Word> scratch(words + 1, 0);
+    std::vector<std::vector<Word>> candidates;
+    generator.successors(
+        from.data(), scratch.data(), [&](const Word* succ, const tioa::StepLabel&) {
+          if (fingerprint(succ, words) != fingerprint_of(path[i + 1]))
+            return;
+          std::vector<Word> state(succ, succ + words);
+          if (std::find(candidates.begin(), candidates.end(), state) == candidates.end())
+            candidates.push_back(std::move(state));
+        });
+    for (auto& candidate : candidates) {
+      states.push_back(std::move(candidate));
+      if (self(self, i + 1))
+        return true;
+      states.pop_back();
+    }
+    return false;
+  };
+  struct Found {};
+  std::vector<Word> buffer(words + 1, 0);
+  try {
+    ex.start->enumerate(buffer.data(), 0, [&] {
+      if (fingerprint(buffer.data(), words) != fingerprint_of(path.front()))
+        return;
+      states.assign(1, std::vector<Word>(buffer.begin(), buffer.begin() + words));
+      if (extend_from(extend_from, 0))
+        throw Found{};
+    });
+  } catch (const Found&) {
+    return states;
+  }
+  throw std::logic_error("fingerprint store: no path of the model has the fingerprints of the "
+                         "path to state " +
+                         std::to_string(path.back()));
+}
+
 } // namespace
 
 Trace trace_to(const tioa::SuccessorGenerator& generator, const Exploration& ex, StateId id) {
@@ -37,6 +96,18 @@ Trace trace_to(const tioa::SuccessorGenerator& generator, const Exploration& ex,
     path.push_back(at);
   std::reverse(path.begin(), path.end());
   Trace trace;
+  if (ex.fingerprints()) {
+    std::vector<Word> last; // the state at `id`, when the run kept it
+    if (ex.found == id)
+      last = ex.found_state;
+    else if (!ex.stuck.empty() && ex.stuck.front() == id)
+      last = ex.first_stuck_state;
+    const auto states = reexecute(generator, ex, path, last);
+    trace.steps.push_back({"", 0, states.front()});
+    for (std::size_t i = 1; i < states.size(); ++i)
+      extend(generator, trace, states[i].data());
+    return trace;
+  }
   trace.steps.push_back({"", 0, copy_state(ex.store.state(path.front()), generator.words())});
   for (std::size_t i = 1; i < path.size(); ++i)
     extend(generator, trace, ex.store.state(path[i]));

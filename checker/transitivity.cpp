@@ -11,6 +11,7 @@ namespace checker {
 PropertyResult check_transitivity(const Automaton& system, const StatePredicate& l1,
                                   const std::string& l1_name, const StatePredicate& l2,
                                   const std::string& l2_name, const ExploreOptions& options) {
+  require_exact_store(options, "the transitivity check");
   const PropertyResult first = check_stabilisation(system, l1, options);
   const PropertyResult second = check_stabilisation(tioa::Start(system, l1, l1_name), l2, options);
   const PropertyResult direct = check_stabilisation(system, l2, options);

@@ -107,7 +107,7 @@ void add_model_options(CLI::App* command, ModelRequest& request, const std::stri
 }
 
 void add_run_options(CLI::App* command, RunSettings& settings, Limits& limits, std::string& trace,
-                     bool with_trace) {
+                     std::string& store, bool with_trace) {
   command->add_flag("--json", settings.json, "print one JSON object on stdout");
   command->add_option("--junit", settings.junit_path, "also write a JUnit XML report to FILE")
       ->type_name("FILE");
@@ -135,7 +135,16 @@ void add_run_options(CLI::App* command, RunSettings& settings, Limits& limits, s
               std::to_string(default_memory_mib()) + " here; 0: no limit)")
       ->type_name("MiB")
       ->check(whole_number());
-  if (with_trace) {
+  if (with_trace) { // check and explore: one model, its traces and the store
+    command
+        ->add_option(
+            "--store", store,
+            "how visited states are held: exact (default), or fingerprint: 64 bits a state (as "
+            "TLC), for models that do not fit; invariants and deadlock / time-lock "
+            "checks only, and what holds is reported incomplete, \"holds up to hash "
+            "collisions, omission probability <= p\" (p = n(n-1)/2/2^64 for n states)")
+        ->type_name("STORE")
+        ->check(CLI::IsMember({"exact", "fingerprint"}));
     command->add_option("--trace", trace, "how to show traces: text, json or none")
         ->type_name("MODE")
         ->check(CLI::IsMember({"text", "json", "none"}));
@@ -164,6 +173,7 @@ int run(int argc, char** argv, const catalogue::Catalogue& models, const Program
   ModelRequest request;
   Limits limits;
   std::string trace = "text";
+  std::string store = "exact";
   std::string from = "arbitrary";
   bool list_json = false;
 
@@ -172,7 +182,7 @@ int run(int argc, char** argv, const catalogue::Catalogue& models, const Program
 
   CLI::App* check = app.add_subcommand("check", "check a model's properties");
   add_model_options(check, request, name);
-  add_run_options(check, settings, limits, trace, true);
+  add_run_options(check, settings, limits, trace, store, true);
 
   CLI::App* explore = app.add_subcommand(
       "explore", "search counterexamples: invariants and deadlock / time-lock, from arbitrary "
@@ -181,14 +191,14 @@ int run(int argc, char** argv, const catalogue::Catalogue& models, const Program
   explore->add_option("--from", from, "arbitrary (every valuation is a start state) or start")
       ->type_name("FROM")
       ->check(CLI::IsMember({"arbitrary", "start"}));
-  add_run_options(explore, settings, limits, trace, true);
+  add_run_options(explore, settings, limits, trace, store, true);
 
   CLI::App* suite = app.add_subcommand(
       "suite", "run every model's suite against the expected verdicts (the CI run)");
   std::vector<std::string> suite_models;
   suite->add_option("--model", suite_models, "run only this model's entries (repeatable)")
       ->type_name("MODEL");
-  add_run_options(suite, settings, limits, trace, false);
+  add_run_options(suite, settings, limits, trace, store, false);
 
   // The program's own commands, each with the function that runs it once given.
   std::vector<std::pair<CLI::App*, std::function<int()>>> extra;
@@ -227,6 +237,8 @@ int run(int argc, char** argv, const catalogue::Catalogue& models, const Program
   if (limits.max_memory_mib > (std::numeric_limits<std::uint64_t>::max() >> 20))
     return fail("--max-memory: " + std::to_string(limits.max_memory_mib) + " MiB is too large");
   settings.limits.max_memory_bytes = limits.max_memory_mib << 20;
+  settings.store =
+      store == "fingerprint" ? checker::StoreKind::fingerprint : checker::StoreKind::exact;
   settings.trace = trace == "json"   ? TraceMode::json
                    : trace == "none" ? TraceMode::none
                                      : TraceMode::text;

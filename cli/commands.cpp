@@ -65,6 +65,14 @@ int command_check(const catalogue::Catalogue& models, const ModelRequest& reques
                   const RunSettings& settings) {
   const Built built = build(models, request);
   const auto properties = select_properties(built.instance, request.model, request.properties);
+  if (settings.store == checker::StoreKind::fingerprint)
+    for (const checker::Property* property : properties)
+      if (!checker::runs_on_fingerprint_store(*property))
+        throw catalogue::UsageError(
+            "--store fingerprint: property '" + property->name + "' of model '" + request.model +
+            "' is a " + checker::to_string(property->kind) +
+            " property; only invariants and deadlock / time-lock checks run on the fingerprint "
+            "store (the others read states or edges after the search): use --store exact");
   auto junit = open_report_file(settings.junit_path);
   auto html = open_report_file(settings.html_path);
   ModelRun run = start_run(built, built.instance.system);

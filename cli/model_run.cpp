@@ -25,6 +25,7 @@ checker::ExploreOptions explore_options(const RunSettings& settings) {
   options.limits = settings.limits;
   options.threads = settings.threads;
   options.por = settings.por;
+  options.store = settings.store;
   options.progress = true; // drawn only on a terminal, and only for runs longer than 1 s
   return options;
 }

@@ -82,6 +82,9 @@ Json property_json(const ModelRun& run, const checker::PropertyResult& r, bool w
   out["por"] = r.por;
   if (r.por)
     out["reduced_states"] = r.reduced_states;
+  out["store"] = r.store;
+  if (r.omission_probability)
+    out["omission_probability"] = *r.omission_probability;
   out["time_unit"] = r.time_unit;
   const bool timing_kind = r.kind == "stabilisation" || r.kind == "transitivity";
   if (timing_kind && r.worst_time)

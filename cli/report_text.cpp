@@ -108,6 +108,9 @@ void print_property_block(std::ostream& out, const ModelRun& run, const checker:
   if (r.por && r.reduced_states > 0) // with none, the graph explored is the full one
     out << "   zero-time steps reduced (--por on): " << r.reduced_states
         << " states expanded in part; the counts are the reduced graph's\n";
+  if (r.omission_probability)
+    out << "   store: " << r.store << " (64-bit), omission probability ≤ "
+        << checker::format_probability(*r.omission_probability) << '\n';
   if (r.worst_time) {
     out << "   worst time: " << format_worst_time(r);
     if (r.last_time_outside)

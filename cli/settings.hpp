@@ -15,7 +15,8 @@ enum class TraceMode { text, json, none };
 
 struct RunSettings {
   unsigned threads = 1;
-  bool por = true; // --por on|off
+  bool por = true;                                      // --por on|off
+  checker::StoreKind store = checker::StoreKind::exact; // --store (check, explore)
   checker::Limits limits;
   bool json = false;
   std::string junit_path; // empty: no JUnit file

@@ -62,8 +62,8 @@ struct Setup {
     });
   }
   Level level(GrowthGate& gate, std::size_t workers) {
-    return Level{generator, store, discovery, parent, gate,     0,      first_new,
-                 0,         0,     workers,   0,      progress, signals, nullptr};
+    return Level{generator, store,   discovery, parent,   gate,    0,       first_new, 0,
+                 0,         workers, 0,         progress, signals, nullptr, nullptr};
   }
   Words stored(StateId id) const { return Words(store.state(id), store.state(id) + a.words()); }
 
