@@ -126,9 +126,10 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
   for (std::uint32_t a = 0; a < actions; ++a) {
     const tioa::ActionSignature& sig = signatures[a];
     const tioa::State from(state, 0, s.traces.data() + std::size_t{a} * words, words);
-    tioa::for_each_params(sig.params, [&](const tioa::Params& p) {
-      if (sig.accepts && !sig.accepts(p))
-        return;
+    // Values a binder rules out are steps that are not enabled; what it read is traced.
+    if (!transitions[a].bindings.empty())
+      s.disabled[a] = 1;
+    tioa::for_each_candidate(sig, transitions[a], from, [&](const tioa::Params& p) {
       if (transitions[a].enabled(from, p)) {
         if (s.first_enabled[a] == none)
           s.first_enabled[a] = static_cast<std::uint32_t>(s.enabled.size());

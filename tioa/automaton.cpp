@@ -1,5 +1,7 @@
 #include "tioa/automaton.hpp"
 
+#include <algorithm>
+
 #include "tioa/errors.hpp"
 
 namespace tioa {
@@ -28,6 +30,34 @@ TransitionBuilder& TransitionBuilder::choose(std::uint32_t count, ChoiceEffect e
 TransitionBuilder& TransitionBuilder::footprint(FootprintFunction footprint) {
   automaton_->transition(action_).footprint = std::move(footprint);
   return *this;
+}
+
+TransitionBuilder& TransitionBuilder::bind(const std::string& param, Binder value) {
+  const ActionSignature& sig = automaton_->signature(action_);
+  if (sig.kind == ActionKind::input)
+    throw ModelError("input '" + sig.name + "' cannot bind a parameter: every value may occur");
+  std::size_t index = 0;
+  while (index < sig.params.size() && sig.params[index].name != param)
+    ++index;
+  if (index == sig.params.size())
+    throw ModelError("action '" + sig.name + "' has no parameter '" + param + "' to bind");
+  Transition& t = automaton_->transition(action_);
+  for (const Binding& b : t.bindings)
+    if (b.param == index)
+      throw ModelError("parameter '" + param + "' of '" + sig.name + "' is bound twice");
+  t.bindings.push_back({static_cast<std::uint8_t>(index), std::move(value)});
+  std::sort(t.bindings.begin(), t.bindings.end(),
+            [](const Binding& a, const Binding& b) { return a.param < b.param; });
+  return *this;
+}
+
+TransitionBuilder& TransitionBuilder::bind(const std::string& param,
+                                           const Variable<int>& variable) {
+  return bind(param, [variable](const State& s, const Params&) -> std::optional<std::int32_t> {
+    if (s.is_bottom(variable))
+      return std::nullopt;
+    return s[variable];
+  });
 }
 
 void Automaton::footprint(std::size_t action, const Params& params, Footprint& f) const {

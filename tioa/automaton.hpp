@@ -33,13 +33,26 @@ using ChoiceCount = std::function<std::uint32_t(const State&, const Params&)>;
 using ChoiceEffect = std::function<void(State&, const Params&, std::uint32_t choice)>;
 using Evolve = std::function<void(State&)>;
 
+// A binder gives the only value a parameter can take for the step to be enabled in a
+// state (nullopt: none, e.g. the variable is ⊥): the one-point rule of a guard that says
+// "this parameter equals that state value" (e.g. GPSupdate(l, t)_p with l = loc(p)). The
+// successor generator then tries that value instead of every value of the box. A binder
+// reads the state and the parameters before its own; the guard keeps its own test.
+using Binder = std::function<std::optional<std::int32_t>(const State&, const Params&)>;
+
+struct Binding {
+  std::uint8_t param = 0;
+  Binder value;
+};
+
 // The transition of one action: when it is enabled and what it does.
 struct Transition {
-  Guard precondition;          // empty: always enabled
-  Effect effect;               // deterministic effect (empty: no change), or
-  ChoiceEffect choice_effect;  // one effect per choice, with
-  ChoiceCount choices;         // the number of choices in this state (empty: 1)
-  FootprintFunction footprint; // what it may read and write (empty: the whole automaton)
+  Guard precondition;            // empty: always enabled
+  Effect effect;                 // deterministic effect (empty: no change), or
+  ChoiceEffect choice_effect;    // one effect per choice, with
+  ChoiceCount choices;           // the number of choices in this state (empty: 1)
+  FootprintFunction footprint;   // what it may read and write (empty: the whole automaton)
+  std::vector<Binding> bindings; // parameters bound to state values (none: the whole box)
 
   bool enabled(const State& s, const Params& p) const {
     return !precondition || precondition(s, p);
@@ -75,6 +88,11 @@ public:
   TransitionBuilder& choose(std::uint32_t count, ChoiceEffect effect);
   // What the transition may read and write (tioa/footprint.hpp); without it, everything.
   TransitionBuilder& footprint(FootprintFunction footprint);
+  // Binds the parameter named `param` (see Binder); not for inputs, which every value of
+  // their box may drive. A ModelError for an unknown parameter or one bound twice.
+  TransitionBuilder& bind(const std::string& param, Binder value);
+  // The parameter equals the variable (no value while it is ⊥).
+  TransitionBuilder& bind(const std::string& param, const Variable<int>& variable);
 
 private:
   Automaton* automaton_;

@@ -81,6 +81,12 @@ Transition synchronised(std::vector<Participant> parts) {
                        part.component + "' (TIOA requires input enabling)");
     part.transition.apply(local, p, choice);
   };
+  // The owner's bound parameters, read in the owner's part of the state.
+  for (const Binding& b : owner.transition.bindings)
+    t.bindings.push_back(
+        {b.param, [value = b.value, base = owner.base](const State& s, const Params& p) {
+           return value(s.at(base), p);
+         }});
   // The step reads and writes what the parts that take part in it do.
   t.footprint = [shared, receives](const Params& p, Footprint& f) {
     for (const auto& part : *shared) {

@@ -67,6 +67,7 @@ Automaton Fail(const Automaton& a, FailActions names) {
       if (!s[failed])
         original.apply(s, p, choice);
     };
+    t.bindings = original.bindings; // inputs have none
     t.footprint = [original, failed, bits](const Params& p, Footprint& f) {
       f.reads(failed);
       if (original.footprint)

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tioa/automaton.hpp"
+#include "tioa/candidates.hpp"
 
 namespace tioa {
 
@@ -52,10 +53,7 @@ public:
     for (std::uint32_t a = 0; a < actions.size(); ++a) {
       const Transition& t = transitions[a];
       label.action = a;
-      const bool narrowed = static_cast<bool>(actions[a].accepts);
-      for_each_params(actions[a].params, [&](const Params& p) {
-        if (narrowed && !actions[a].accepts(p))
-          return;
+      for_each_candidate(actions[a], t, from, [&](const Params& p) {
         if (!t.enabled(from, p)) {
           if (actions[a].kind == ActionKind::input)
             throw_input_not_enabled(actions[a], p);

@@ -42,6 +42,7 @@ Fischer build(int n, int a, int b) {
       .pre([=](const State& s, const Params& x) {
         return s[loc[x[0]]] == Loc::wait && s[c[x[0]]] >= b && s[id] == x[0];
       })
+      .bind(process.name, id) // only the process whose id is set may enter
       .eff([=](State& s, const Params& x) {
         s[loc[x[0]]] = Loc::cs;
         s[c[x[0]]] = 0;

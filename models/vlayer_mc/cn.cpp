@@ -62,6 +62,7 @@ tioa::Automaton cn(const VlConfig& c, int p) {
       });
   a.output(names::vcast_cn_update(p), {{"l", 0, points - 1}})
       .pre([=](const State& s, const Params& m) { return cn_update_due(s) && m[0] == s[x]; })
+      .bind("l", x)
       .eff([=](State& s, const Params&) {
         s[since] = 0;
         s.set_bottom(target);
@@ -82,6 +83,9 @@ tioa::Automaton cn(const VlConfig& c, int p) {
           [=](const Params&, tioa::Footprint& f) { f.reads(x).reads(clock).writes(target); });
   a.output(names::velocity(p), {{"v", zero_velocity, points - 1}})
       .pre([=](const State& s, const Params& m) { return velocity_due(s) && m[0] == desired(s); })
+      .bind(
+          "v",
+          [=](const State& s, const Params&) -> std::optional<std::int32_t> { return desired(s); })
       .eff([=](State& s, const Params& m) { s[v] = m[0]; })
       .footprint(
           [=](const Params&, tioa::Footprint& f) { f.reads(v).reads(x).reads(target).writes(v); });

@@ -24,6 +24,8 @@ tioa::Automaton rw(const VlConfig& c) {
         .pre([=](const State& s, const Params& x) {
           return s[gps_age[p]] >= 1 && x[0] == s[loc[p]] && x[1] == s[now];
         })
+        .bind("l", loc[p])
+        .bind("t", now)
         .eff([=](State& s, const Params&) { s[gps_age[p]] = 0; })
         .footprint([=](const Params&, tioa::Footprint& f) {
           f.reads(gps_age[p]).reads(loc[p]).reads(now).writes(gps_age[p]);

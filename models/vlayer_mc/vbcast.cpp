@@ -75,6 +75,10 @@ tioa::Automaton vbcast(const VlConfig& c) {
         .pre([=](const State& s, const Params& x) {
           return s[cn_pending[x[0]]] && s[cn_loc[x[0]]] == x[1] && lattice.region_of(x[1]) == v;
         })
+        .bind("l",
+              [=](const State& s, const Params& x) -> std::optional<std::int32_t> {
+                return s[cn_loc[x[0]]];
+              })
         .eff([=](State& s, const Params& x) {
           s[cn_pending[x[0]]] = false;
           s[cn_age[x[0]]] = 0;
@@ -90,6 +94,10 @@ tioa::Automaton vbcast(const VlConfig& c) {
           return at != from.end() && (s[vn_mask[x[0]]] >> (at - from.begin()) & 1) != 0 &&
                  s[vn_count[x[0]]] == x[1];
         })
+        .bind("n",
+              [=](const State& s, const Params& x) -> std::optional<std::int32_t> {
+                return s[vn_count[x[0]]];
+              })
         .eff([=](State& s, const Params& x) {
           const auto& from = lattice.nbrs(x[0]);
           const auto bit = std::find(from.begin(), from.end(), v) - from.begin();
@@ -108,6 +116,10 @@ tioa::Automaton vbcast(const VlConfig& c) {
           const int slot = x[0] * n + p;
           return s[tu_pending[slot]] && s[tu_target[slot]] == x[1];
         })
+        .bind("x",
+              [=](const State& s, const Params& x) -> std::optional<std::int32_t> {
+                return s[tu_target[x[0] * n + p]];
+              })
         .eff([=](State& s, const Params& x) {
           const int slot = x[0] * n + p;
           s[tu_pending[slot]] = false;

@@ -25,6 +25,7 @@ tioa::Automaton vbdelay(const VlConfig& c, int p) {
           [=](const Params&, tioa::Footprint& f) { f.writes(held).writes(age).writes(loc); });
   a.output(names::vcast_prime_cn_update(p), {{"l", 0, points - 1}})
       .pre([=](const State& s, const Params& x) { return s[held] && x[0] == s[loc]; })
+      .bind("l", loc)
       .eff([=](State& s, const Params&) {
         s[held] = false;
         s[age] = 0;

@@ -85,6 +85,9 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
       .pre([=](const State& s, const Params& m) {
         return at_phase(s, vn_phase) && m[0] == reported(s);
       })
+      .bind(
+          "n",
+          [=](const State& s, const Params&) -> std::optional<std::int32_t> { return reported(s); })
       .eff([=](State& s, const Params&) { s[since] = 0; })
       .footprint([=](const Params&, tioa::Footprint& f) {
         f.reads(clock).reads(since).writes(since);
@@ -125,6 +128,12 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
       .pre([=](const State& s, const Params& m) {
         return !s.is_bottom(out[m[0]]) && s[out[m[0]]] == m[1];
       })
+      .bind("x",
+            [=](const State& s, const Params& m) -> std::optional<std::int32_t> {
+              if (s.is_bottom(out[m[0]]))
+                return std::nullopt;
+              return s[out[m[0]]];
+            })
       .eff([=](State& s, const Params& m) { s.set_bottom(out[m[0]]); })
       .footprint(
           [=](const Params& m, tioa::Footprint& f) { f.reads(out[m[0]]).writes(out[m[0]]); });

@@ -15,6 +15,7 @@ tioa::Automaton vw(const VlConfig& c, bool vsa_faults) {
   for (int u = 0; u < regions; ++u) {
     a.output(names::time(u), {{"t", 0, c.delta - 1}})
         .pre([=](const State& s, const Params& x) { return s[age[u]] >= 1 && x[0] == s[now]; })
+        .bind("t", now)
         .eff([=](State& s, const Params&) { s[age[u]] = 0; })
         .footprint(
             [=](const Params&, tioa::Footprint& f) { f.reads(age[u]).reads(now).writes(age[u]); });

@@ -1,0 +1,56 @@
+#pragma once
+// The parameter values the successor generator tries for one action in one state: every
+// point of the action's box that its signature accepts, in lexicographic order, except
+// that a bound parameter (automaton.hpp, Binder) takes only the value its binder gives.
+
+#include <cstdint>
+#include <optional>
+
+#include "tioa/automaton.hpp"
+
+namespace tioa {
+
+namespace candidates_detail {
+
+template <class Visit>
+void from(std::size_t i, std::size_t binding, const ActionSignature& sig, const Transition& t,
+          const State& s, Params& p, Visit& visit) {
+  if (i == sig.params.size()) {
+    if (!sig.accepts || sig.accepts(p))
+      visit(static_cast<const Params&>(p));
+    return;
+  }
+  const ParamRange& range = sig.params[i];
+  if (binding < t.bindings.size() && t.bindings[binding].param == i) {
+    const std::optional<std::int32_t> value = t.bindings[binding].value(s, p);
+    if (!value || *value < range.lo || *value > range.hi)
+      return;
+    p.values[i] = *value;
+    from(i + 1, binding + 1, sig, t, s, p, visit);
+    return;
+  }
+  for (std::int32_t v = range.lo; v <= range.hi; ++v) {
+    p.values[i] = v;
+    from(i + 1, binding, sig, t, s, p, visit);
+  }
+}
+
+} // namespace candidates_detail
+
+template <class Visit>
+void for_each_candidate(const ActionSignature& sig, const Transition& t, const State& s,
+                        Visit&& visit) {
+  if (t.bindings.empty()) {
+    const bool narrowed = static_cast<bool>(sig.accepts);
+    for_each_params(sig.params, [&](const Params& p) {
+      if (!narrowed || sig.accepts(p))
+        visit(p);
+    });
+    return;
+  }
+  Params p;
+  p.size = static_cast<std::uint8_t>(sig.params.size());
+  candidates_detail::from(0, 0, sig, t, s, p, visit);
+}
+
+} // namespace tioa
