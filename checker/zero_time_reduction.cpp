@@ -11,13 +11,6 @@ namespace {
 
 constexpr std::uint32_t none = 0xffffffffu;
 
-bool intersects(const Word* a, const Word* b, std::uint32_t words) {
-  for (std::uint32_t w = 0; w < words; ++w)
-    if (a[w] & b[w])
-      return true;
-  return false;
-}
-
 // The name of the variable that holds the first bit of `outside`.
 std::string first_variable(const tioa::StateLayout& layout, const Word* outside,
                            std::uint32_t words) {
@@ -36,18 +29,47 @@ std::string first_variable(const tioa::StateLayout& layout, const Word* outside,
 ZeroTimeReduction::ZeroTimeReduction(const tioa::SuccessorGenerator& generator,
                                      tioa::StatePredicate invariant)
     : generator_(&generator), invariant_(std::move(invariant)),
-      footprints_(tioa::action_footprints(generator.automaton())), words_(generator.words()) {}
+      footprints_(tioa::action_footprints(generator.automaton())), words_(generator.words()),
+      action_words_((static_cast<std::uint32_t>(footprints_.size()) + 63) / 64) {
+  const std::size_t bits = std::size_t{words_} * 64;
+  writers_of_bit_.assign(bits * action_words_, 0);
+  readers_of_bit_.assign(bits * action_words_, 0);
+  for (std::uint32_t b = 0; b < footprints_.size(); ++b)
+    for (std::size_t bit = 0; bit < bits; ++bit) {
+      const Word one = Word{1} << (bit & 63);
+      if (footprints_[b].writes[bit >> 6] & one)
+        writers_of_bit_[bit * action_words_ + b / 64] |= Word{1} << (b % 64);
+      if (footprints_[b].reads[bit >> 6] & one)
+        readers_of_bit_[bit * action_words_ + b / 64] |= Word{1} << (b % 64);
+    }
+}
 
-bool ZeroTimeReduction::writes_any(std::uint32_t action, const Word* mask) const {
-  return intersects(footprints_[action].writes.data(), mask, words_);
+void ZeroTimeReduction::gather(const std::vector<Word>& of_bit, const Word* mask,
+                               Word* actions) const {
+  for (std::uint32_t w = 0; w < words_; ++w)
+    for (Word bits = mask[w]; bits != 0; bits &= bits - 1) {
+      const std::size_t bit = std::size_t{w} * 64 + static_cast<std::size_t>(__builtin_ctzll(bits));
+      const Word* row = of_bit.data() + bit * action_words_;
+      for (std::uint32_t k = 0; k < action_words_; ++k)
+        actions[k] |= row[k];
+    }
+}
+
+void ZeroTimeReduction::choose(const Word* actions, Scratch& s) const {
+  for (std::uint32_t k = 0; k < action_words_; ++k)
+    for (Word bits = actions[k]; bits != 0; bits &= bits - 1) {
+      const std::uint32_t b = k * 64 + static_cast<std::uint32_t>(__builtin_ctzll(bits));
+      if (!s.chosen[b]) {
+        s.chosen[b] = 1;
+        s.work.push_back(b);
+      }
+    }
 }
 
 void ZeroTimeReduction::add_writers(const Word* mask, Scratch& s) const {
-  for (std::uint32_t b = 0; b < footprints_.size(); ++b)
-    if (!s.chosen[b] && writes_any(b, mask)) {
-      s.chosen[b] = 1;
-      s.work.push_back(b);
-    }
+  std::fill(s.gathered.begin(), s.gathered.end(), 0);
+  gather(writers_of_bit_, mask, s.gathered.data());
+  choose(s.gathered.data(), s);
 }
 
 void ZeroTimeReduction::run_step(const Word* state, std::size_t k, Scratch& s, Word* reads,
@@ -120,6 +142,7 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
   s.first_enabled.assign(actions, none);
   s.disabled.assign(actions, 0);
   s.chosen.assign(actions, 0);
+  s.gathered.assign(action_words_, 0);
   s.work.clear();
   const auto& signatures = automaton.actions();
   const auto& transitions = automaton.transitions();
@@ -168,17 +191,12 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
         run_step(state, k, s, step_reads, step_writes);
         for (std::size_t j = before; j < s.durations.size(); ++j)
           order.emplace_back(k, static_cast<std::uint32_t>(j));
-        for (std::uint32_t b = 0; b < actions; ++b) {
-          if (s.chosen[b])
-            continue;
-          const tioa::ActionFootprint& other = footprints_[b];
-          if (intersects(step_writes, other.reads.data(), words) ||
-              intersects(step_writes, other.writes.data(), words) ||
-              intersects(other.writes.data(), step_reads, words)) {
-            s.chosen[b] = 1;
-            s.work.push_back(b);
-          }
-        }
+        // Every action that reads or writes what the step writes, or writes what it read.
+        std::fill(s.gathered.begin(), s.gathered.end(), 0);
+        gather(readers_of_bit_, step_writes, s.gathered.data());
+        gather(writers_of_bit_, step_writes, s.gathered.data());
+        gather(writers_of_bit_, step_reads, s.gathered.data());
+        choose(s.gathered.data(), s);
       }
     }
     if (any_enabled)

@@ -69,6 +69,7 @@ public:
     std::vector<std::uint8_t> disabled;       // per action: a step of its box is not enabled
     std::vector<std::uint8_t> chosen;         // per action: in the stubborn set
     std::vector<std::uint32_t> work;
+    std::vector<Word> gathered;                                 // a bit set of actions
     std::vector<std::pair<std::uint32_t, std::uint32_t>> order; // (step, successor)
     std::vector<Word> sorted, state;
     std::uint64_t reduced = 0; // states where fewer steps than enabled were taken
@@ -81,7 +82,10 @@ public:
   std::optional<std::size_t> reduce(const Word* state, Scratch& scratch) const;
 
 private:
-  bool writes_any(std::uint32_t action, const Word* mask) const;
+  // ORs into `actions` (a bit set of actions) the row of `of_bit` of each bit of `mask`.
+  void gather(const std::vector<Word>& of_bit, const Word* mask, Word* actions) const;
+  // Puts in the set every action of the bit set `actions` not in it yet.
+  void choose(const Word* actions, Scratch& s) const;
   // Puts in the set every action not in it that may write what `mask` holds.
   void add_writers(const Word* mask, Scratch& s) const;
   // Runs step `k` of scratch.enabled: appends its successors, checks its declared
@@ -92,6 +96,9 @@ private:
   tioa::StatePredicate invariant_;
   std::vector<tioa::ActionFootprint> footprints_; // per action, over its whole box
   std::uint32_t words_;
+  std::uint32_t action_words_; // words of a bit set of actions
+  // Per bit of the state, the bit set of the actions that may write it, and read it.
+  std::vector<Word> writers_of_bit_, readers_of_bit_;
 };
 
 } // namespace checker
