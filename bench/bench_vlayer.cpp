@@ -94,7 +94,7 @@ const std::vector<Case>& cases() {
       {"2x2-r1-n4", "lmc-closure", false, 50'713'601, 406'606'349},
       {"2x2-r1-n8", "no-timelock", false, 33'766'734, 360'688'293},
       {"2x2-r1-n8", "l1mc-closure", false, 33'766'734, 0},
-      {"2x2-r2-n4", "no-timelock", false, 0, 0},
+      {"2x2-r2-n4", "no-timelock", false, 55'636'476, 529'656'010},
       {"2x2-r2-n4", "l1mc-closure", false, 0, 0},
       {"3x3-r1", "no-timelock", false, 0, 0},
       {"3x3-r1", "l1mc-closure", false, 0, 0},
