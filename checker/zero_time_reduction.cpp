@@ -177,7 +177,6 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
     (void)invariant_(tioa::State(state, 0, invariant_reads, words));
     add_writers(invariant_reads, s);
   }
-  bool any_enabled = false;
   for (;;) {
     while (!s.work.empty()) {
       const std::uint32_t a = s.work.back();
@@ -186,7 +185,6 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
         add_writers(s.traces.data() + std::size_t{a} * words, s);
       for (std::uint32_t k = s.first_enabled[a]; k < s.enabled.size() && s.enabled[k].action == a;
            ++k) {
-        any_enabled = true;
         const std::size_t before = s.durations.size();
         run_step(state, k, s, step_reads, step_writes);
         for (std::size_t j = before; j < s.durations.size(); ++j)
@@ -199,11 +197,17 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
         choose(s.gathered.data(), s);
       }
     }
-    if (any_enabled)
+    // The set needs a step with a successor (a step with no choice has none): when it has
+    // none yet, the first enabled action not in it joins.
+    if (!order.empty())
       break;
-    const std::uint32_t first = s.enabled.front().action; // no chosen action is enabled
-    s.chosen[first] = 1;
-    s.work.push_back(first);
+    const auto next =
+        std::find_if(s.enabled.begin(), s.enabled.end(),
+                     [&](const Scratch::Step& step) { return !s.chosen[step.action]; });
+    if (next == s.enabled.end())
+      break; // every enabled step ran and none has a successor: the state has none
+    s.chosen[next->action] = 1;
+    s.work.push_back(next->action);
   }
   if (std::any_of(s.enabled.begin(), s.enabled.end(),
                   [&](const Scratch::Step& step) { return !s.chosen[step.action]; }))

@@ -177,3 +177,18 @@ TEST_CASE("random small systems: the same verdicts with and without the reductio
   }
   CHECK(reduced_somewhere > 20);
 }
+
+TEST_CASE("a step with no choice gives no successor, reduced or not", "[por]") {
+  // `idle` always offers a step with no choice and never lets time pass: once the worker
+  // is done, nothing can happen (a time-lock), with and without the reduction.
+  Automaton idle("idle");
+  idle.boolean("b", false);
+  idle.internal("nothing").choose(0, [](State&, const Params&, std::uint32_t) {});
+  idle.trajectories([](State&) {}, [](const State&) { return true; });
+  const Automaton system = tioa::compose("stuck", {idle, worker(0, 1)});
+  const PropertyResult full = check_no_deadlock(system, with_por(false));
+  const PropertyResult reduced = check_no_deadlock(system, with_por(true));
+  CHECK(full.verdict == Verdict::violated);
+  CHECK(reduced.verdict == Verdict::violated);
+  CHECK(reduced.states == full.states);
+}
