@@ -61,6 +61,7 @@ void ZeroTimeReduction::choose(const Word* actions, Scratch& s) const {
       const std::uint32_t b = k * 64 + static_cast<std::uint32_t>(__builtin_ctzll(bits));
       if (!s.chosen[b]) {
         s.chosen[b] = 1;
+        s.enabled_left -= s.first_enabled[b] != none ? 1 : 0;
         s.work.push_back(b);
       }
     }
@@ -166,6 +167,9 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
   }
   if (s.enabled.size() <= 1)
     return std::nullopt;
+  s.enabled_left = 0;
+  for (std::uint32_t a = 0; a < actions; ++a)
+    s.enabled_left += s.first_enabled[a] != none ? 1 : 0;
 
   // The stubborn set, action by action; the steps of a chosen action run as it is chosen.
   s.successors.clear();
@@ -181,7 +185,9 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
     while (!s.work.empty()) {
       const std::uint32_t a = s.work.back();
       s.work.pop_back();
-      if (s.disabled[a])
+      // Once every enabled action is in, more actions change nothing: only the steps of
+      // those in the set still run.
+      if (s.disabled[a] && s.enabled_left > 0)
         add_writers(s.traces.data() + std::size_t{a} * words, s);
       for (std::uint32_t k = s.first_enabled[a]; k < s.enabled.size() && s.enabled[k].action == a;
            ++k) {
@@ -190,6 +196,8 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
         for (std::size_t j = before; j < s.durations.size(); ++j)
           order.emplace_back(k, static_cast<std::uint32_t>(j));
         // Every action that reads or writes what the step writes, or writes what it read.
+        if (s.enabled_left == 0)
+          continue;
         std::fill(s.gathered.begin(), s.gathered.end(), 0);
         gather(readers_of_bit_, step_writes, s.gathered.data());
         gather(writers_of_bit_, step_writes, s.gathered.data());
@@ -207,6 +215,7 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
     if (next == s.enabled.end())
       break; // every enabled step ran and none has a successor: the state has none
     s.chosen[next->action] = 1;
+    --s.enabled_left;
     s.work.push_back(next->action);
   }
   if (std::any_of(s.enabled.begin(), s.enabled.end(),

@@ -69,7 +69,8 @@ public:
     std::vector<std::uint8_t> disabled;       // per action: a step of its box is not enabled
     std::vector<std::uint8_t> chosen;         // per action: in the stubborn set
     std::vector<std::uint32_t> work;
-    std::vector<Word> gathered;                                 // a bit set of actions
+    std::vector<Word> gathered;     // a bit set of actions
+    std::uint32_t enabled_left = 0; // actions with an enabled step not in the set yet
     std::vector<std::pair<std::uint32_t, std::uint32_t>> order; // (step, successor)
     std::vector<Word> sorted, state;
     std::uint64_t reduced = 0; // states where fewer steps than enabled were taken
