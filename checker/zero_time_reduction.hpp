@@ -18,7 +18,7 @@
 //  - for a step in the set that is enabled here, every action that may read what it
 //    writes, or write what it reads or writes (here: what it read when its guard and
 //    effect ran in this state).
-//  - at least one enabled step.
+//  - at least one enabled step that has a successor (a step with no choice has none).
 // Reads are traced as the guards and effects run (tioa/state.hpp); writes are the
 // footprints the model declares, or the whole component that owns the step. Every step
 // run here is checked against its declared footprint: a read or write outside it is a
