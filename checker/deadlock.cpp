@@ -22,13 +22,12 @@ PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& 
     r.trace = trace_to(generator, ex, ex.stuck.front());
     r.trace_role = "counterexample";
     r.trace_kind = what;
-    r.message = std::to_string(ex.stuck.size()) + " reachable states with no action" +
+    r.message = reachable_states(ex.stuck.size(), ex) + " with no action" +
                 (generator.timed() ? " and no tick" : "") + " (" + what + ")";
   } else if (!ex.complete()) {
     mark_incomplete(r, ex, std::string("no ") + what + " in the states covered");
   } else {
-    mark_holds(r, ex,
-               std::string("no ") + what + " in " + std::to_string(r.states) + " reachable states");
+    mark_holds(r, ex, std::string("no ") + what + " in " + reachable_states(r.states, ex));
   }
   return r;
 }

@@ -28,7 +28,7 @@ PropertyResult check_invariant(const Automaton& system, const StatePredicate& in
   } else if (!ex.complete()) {
     mark_incomplete(r, ex, "no violation in the states covered");
   } else {
-    mark_holds(r, ex, "all " + std::to_string(r.states) + " reachable states satisfy it");
+    mark_holds(r, ex, "all " + reachable_states(r.states, ex) + " satisfy it");
   }
   return r;
 }

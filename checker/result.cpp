@@ -37,6 +37,12 @@ PropertyResult result_of(const std::string& kind, const Exploration& ex,
   return r;
 }
 
+std::string reachable_states(std::uint64_t count, const Exploration& ex) {
+  if (ex.reduced_states > 0)
+    return "the " + std::to_string(count) + " reachable states of the reduced graph";
+  return std::to_string(count) + " reachable states";
+}
+
 void mark_incomplete(PropertyResult& result, const Exploration& ex, const std::string& covered) {
   result.verdict = Verdict::incomplete;
   result.message = std::string(describe(ex.stop)) + " after " + std::to_string(ex.store.size()) +

@@ -50,6 +50,10 @@ struct PropertyResult {
 PropertyResult result_of(const std::string& kind, const Exploration& ex,
                          const tioa::SuccessorGenerator& generator);
 
+// "N reachable states", or, when zero-time steps were reduced, "the N reachable states of
+// the reduced graph": a reduced search visits only some of the reachable states.
+std::string reachable_states(std::uint64_t count, const Exploration& ex);
+
 // Sets verdict and message for a run that stopped on a limit.
 void mark_incomplete(PropertyResult& result, const Exploration& ex, const std::string& covered);
 
