@@ -258,17 +258,14 @@ Automaton compose(const std::string& name, const std::vector<Automaton>& compone
         },
         [parts](const State& s) {
           // Time stops while some part stops it: what the parts before it read did not
-          // decide that, so a traced evaluation forgets it.
-          State::TraceMark mark;
+          // decide that, so a traced evaluation traces only the part that stops time.
+          const State untraced(s.words(), s.base());
           for (const auto& [traj, base] : *parts) {
-            if (!traj.stop_when)
+            if (!traj.stop_when || !traj.stop_when(untraced.at(base)))
               continue;
             if (s.trace())
-              s.mark_trace(mark);
-            if (traj.stop_when(s.at(base)))
-              return true;
-            if (s.trace())
-              s.rewind_trace(mark);
+              (void)traj.stop_when(s.at(base));
+            return true;
           }
           return false;
         });

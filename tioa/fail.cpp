@@ -80,7 +80,7 @@ Automaton Fail(const Automaton& a, FailActions names) {
 
   out.input(names.fail) // rule (3)
       .eff([failed](State& s, const Params&) { s[failed] = true; })
-      .footprint([failed](const Params&, Footprint& f) { f.writes(failed); });
+      .footprint([failed](const Params&, Footprint& f) { f.sets(failed, true); });
   out.input(names.restart) // rule (4)
       .footprint([failed, bits](const Params&, Footprint& f) {
         f.whole(bits);

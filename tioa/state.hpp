@@ -33,33 +33,20 @@ private:
 
 // A state may trace its reads: every bit read through it is then set in `trace` (a mask of
 // `trace_words` words, as many as the state has), which tells partial-order reduction what
-// a guard looked at (tioa/footprint.hpp).
+// a guard looked at (tioa/footprint.hpp). It may trace its writes too, into `write_trace`
+// (the bits an effect assigned, whether or not their value changed).
 class State {
 public:
-  State(Word* words, std::uint32_t base, Word* trace = nullptr, std::uint32_t trace_words = 0)
-      : words_(words), base_(base), trace_(trace), trace_words_(trace_words) {}
+  State(Word* words, std::uint32_t base, Word* trace = nullptr, std::uint32_t trace_words = 0,
+        Word* write_trace = nullptr)
+      : words_(words), base_(base), trace_(trace), write_trace_(write_trace),
+        trace_words_(trace_words) {}
   State(const Word* words, std::uint32_t base, Word* trace = nullptr, std::uint32_t trace_words = 0)
       : words_(const_cast<Word*>(words)), base_(base), trace_(trace), trace_words_(trace_words) {}
 
   // The part of this state that belongs to a component placed `offset` bits further on.
   State at(std::uint32_t offset) const {
-    return State(words_, base_ + offset, trace_, trace_words_);
-  }
-
-  // What has been traced so far, to forget the reads of a part of a disjunction that
-  // turned out false (its value did not decide the result). Traces longer than a mark
-  // holds are not rewound, which only keeps more reads than needed.
-  struct TraceMark {
-    static constexpr std::uint32_t capacity = 32;
-    std::array<Word, capacity> saved;
-  };
-  void mark_trace(TraceMark& mark) const {
-    if (trace_ && trace_words_ <= TraceMark::capacity)
-      std::copy(trace_, trace_ + trace_words_, mark.saved.begin());
-  }
-  void rewind_trace(const TraceMark& mark) const {
-    if (trace_ && trace_words_ <= TraceMark::capacity)
-      std::copy(mark.saved.begin(), mark.saved.begin() + trace_words_, trace_);
+    return State(words_, base_ + offset, trace_, trace_words_, write_trace_);
   }
 
   std::uint64_t code(const Slot& slot) const {
@@ -75,6 +62,8 @@ public:
 
   void set_code(const Slot& slot, std::uint64_t code) {
     const std::uint32_t bit = base_ + slot.offset;
+    if (write_trace_) [[unlikely]]
+      set_bits(write_trace_, bit, slot.width);
     const std::uint32_t word = bit >> 6, shift = bit & 63;
     code &= slot.mask;
     words_[word] = (words_[word] & ~(slot.mask << shift)) | (code << shift);
@@ -133,6 +122,7 @@ private:
   Word* words_;
   std::uint32_t base_;
   Word* trace_;
+  Word* write_trace_ = nullptr;
   std::uint32_t trace_words_;
 };
 

@@ -123,3 +123,80 @@ TEST_CASE("a tracing state records the bits it reads, also through at()", "[foot
   CHECK(shifted[c1] == 0);
   CHECK(trace == bits(2, {{2, 2}, {62, 2}}));
 }
+
+TEST_CASE("a tracing state records the bits it writes, whether or not they change", "[footprint]") {
+  const Automaton a = counters("c", true);
+  const auto c0 = find_variable<int>(a, "c[0]");
+  const auto c1 = find_variable<int>(a, "c[1]");
+  std::vector<Word> words(2, 0), reads(1, 0), writes(1, 0); // a spare word, as successors have
+  State s(words.data(), 0, reads.data(), 1, writes.data());
+  s[c1] = 0; // the value it has
+  CHECK(writes == bits(1, {{2, 2}}));
+  State shifted = s.at(0);
+  shifted[c0] = 3;
+  CHECK(writes == bits(1, {{0, 4}}));
+  CHECK(reads == bits(1, {}));
+}
+
+TEST_CASE("a footprint may declare the values it writes, through compose and Fail", "[footprint]") {
+  Automaton sender("sender");
+  const auto sent = sender.boolean("sent", false); // bit 0
+  sender.output("msg", {{"v", 0, 3}})
+      .pre([=](const State& s, const Params&) { return !s[sent]; })
+      .eff([=](State& s, const Params&) { s[sent] = true; })
+      .footprint([=](const Params&, Footprint& f) { f.reads(sent).sets(sent, true); });
+  Automaton receiver("receiver");
+  const auto got = receiver.optional_integer("got", 0, 3); // bits 0-2: codes 0-3, 4 = ⊥
+  const auto count = receiver.integer("count", 0, 3, 0);   // bits 3-4
+  receiver.input("msg", {{"v", 0, 3}})
+      .eff([=](State& s, const Params& m) {
+        s[got] = m[0];
+        s[count] = std::min(s[count] + 1, 3);
+      })
+      .footprint(
+          [=](const Params& m, Footprint& f) { f.sets(got, m[0]).reads(count).writes(count); });
+  receiver.internal("forget")
+      .eff([=](State& s, const Params&) { s.set_bottom(got); })
+      .footprint([=](const Params&, Footprint& f) { f.sets_bottom(got); });
+  const Automaton system = compose("system", {sender, Fail(receiver)});
+  const std::size_t msg = *system.find_action("msg");
+
+  std::vector<Word> reads(1, 0), writes(1, 0), plain(1, 0);
+  DeclaredValues values;
+  values.plain = plain.data();
+  Footprint f(reads.data(), writes.data(), 0, &values);
+  Params p;
+  p.size = 1;
+  p.values[0] = 2;
+  system.footprint(msg, p, f);
+  // sent := true (bit 0, code 1); got := 2 (bits 1-3, code 2); count written plainly.
+  REQUIRE(values.sets.size() == 2);
+  CHECK(values.sets[0].offset == 0);
+  CHECK(values.sets[0].code == 1);
+  CHECK(values.sets[1].offset == 1);
+  CHECK(values.sets[1].width == 3);
+  CHECK(values.sets[1].code == 2);
+  CHECK(writes == bits(1, {{0, 6}}));
+  CHECK(plain == bits(1, {{4, 2}}));
+
+  values.sets.clear();
+  system.footprint(*system.find_action("forget"), Params{}, f);
+  REQUIRE(values.sets.size() == 1);
+  CHECK(values.sets[0].code == 4); // ⊥
+  values.sets.clear();
+  system.footprint(*system.find_action("fail_receiver"), Params{}, f);
+  REQUIRE(values.sets.size() == 1);
+  CHECK(values.sets[0].offset == 6); // Fail's failed bit, after the receiver's 5 bits
+  CHECK(values.sets[0].code == 1);
+}
+
+TEST_CASE("a declared value outside the variable's domain is a model error", "[footprint]") {
+  Automaton a("a");
+  const auto x = a.integer("x", 0, 3, 0);
+  const auto flag = a.boolean("flag", false);
+  std::vector<Word> reads(1, 0), writes(1, 0);
+  Footprint f(reads.data(), writes.data(), 0);
+  CHECK_THROWS_WITH(f.sets(x, 4), Catch::Contains("'x'"));
+  CHECK_THROWS_WITH(f.sets_bottom(flag), Catch::Contains("'flag'"));
+  CHECK_NOTHROW(f.sets(x, 3));
+}
