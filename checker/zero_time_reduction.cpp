@@ -1,15 +1,23 @@
 #include "checker/zero_time_reduction.hpp"
 
 #include <algorithm>
-#include <numeric>
+#include <exception>
+#include <string>
 
+#include "tioa/candidates.hpp"
 #include "tioa/errors.hpp"
 
 namespace checker {
 
 namespace {
 
-constexpr std::uint32_t none = 0xffffffffu;
+constexpr std::uint32_t none = StepTable::none;
+
+// At most this many steps of one writer, and combinations of declared values, are tried;
+// beyond, the writers count as able to change the predicate.
+constexpr std::size_t max_writer_steps = 4096;
+constexpr std::size_t max_combinations = 256;
+constexpr int max_widenings = 4;
 
 // The name of the variable that holds the first bit of `outside`.
 std::string first_variable(const tioa::StateLayout& layout, const Word* outside,
@@ -24,213 +32,534 @@ std::string first_variable(const tioa::StateLayout& layout, const Word* outside,
   return "?";
 }
 
+bool overlaps(const Word* mask, std::uint32_t offset, std::uint32_t width) {
+  for (std::uint32_t bit = offset; bit < offset + width; ++bit)
+    if ((mask[bit >> 6] >> (bit & 63)) & 1)
+      return true;
+  return false;
+}
+
+bool intersects(const Word* a, const Word* b, std::uint32_t words) {
+  for (std::uint32_t w = 0; w < words; ++w)
+    if (a[w] & b[w])
+      return true;
+  return false;
+}
+
+tioa::Slot field_slot(const StepTable::Field& field) {
+  return tioa::Slot::bits(field.offset, static_cast<std::uint8_t>(field.width));
+}
+
+Word field_code(const Word* state, std::uint32_t offset, std::uint32_t width) {
+  return tioa::State(state, 0).code(tioa::Slot::bits(offset, static_cast<std::uint8_t>(width)));
+}
+
+template <class Visit> void for_each_action(const Word* actions, std::uint32_t words, Visit visit) {
+  for (std::uint32_t k = 0; k < words; ++k)
+    for (Word bits = actions[k]; bits != 0; bits &= bits - 1)
+      visit(k * 64 + static_cast<std::uint32_t>(__builtin_ctzll(bits)));
+}
+
 } // namespace
 
 ZeroTimeReduction::ZeroTimeReduction(const tioa::SuccessorGenerator& generator,
                                      tioa::StatePredicate invariant)
-    : generator_(&generator), invariant_(std::move(invariant)),
-      footprints_(tioa::action_footprints(generator.automaton())), words_(generator.words()),
-      action_words_((static_cast<std::uint32_t>(footprints_.size()) + 63) / 64) {
-  const std::size_t bits = std::size_t{words_} * 64;
-  writers_of_bit_.assign(bits * action_words_, 0);
-  readers_of_bit_.assign(bits * action_words_, 0);
-  for (std::uint32_t b = 0; b < footprints_.size(); ++b)
-    for (std::size_t bit = 0; bit < bits; ++bit) {
-      const Word one = Word{1} << (bit & 63);
-      if (footprints_[b].writes[bit >> 6] & one)
-        writers_of_bit_[bit * action_words_ + b / 64] |= Word{1} << (b % 64);
-      if (footprints_[b].reads[bit >> 6] & one)
-        readers_of_bit_[bit * action_words_ + b / 64] |= Word{1} << (b % 64);
-    }
+    : generator_(&generator), invariant_(std::move(invariant)), table_(generator.automaton()),
+      words_(generator.words()), action_words_(table_.action_words()) {}
+
+bool ZeroTimeReduction::step_enabled(std::uint32_t action, const tioa::Params& params,
+                                     const tioa::State& state) const {
+  const tioa::Transition& t = generator_->automaton().transitions()[action];
+  for (const auto& binding : t.bindings) {
+    const std::optional<std::int32_t> value = binding.value(state, params);
+    if (!value || *value != params[binding.param])
+      return false; // a value the binder rules out
+  }
+  return t.enabled(state, params);
 }
 
-void ZeroTimeReduction::gather(const std::vector<Word>& of_bit, const Word* mask,
-                               Word* actions) const {
-  for (std::uint32_t w = 0; w < words_; ++w)
-    for (Word bits = mask[w]; bits != 0; bits &= bits - 1) {
-      const std::size_t bit = std::size_t{w} * 64 + static_cast<std::size_t>(__builtin_ctzll(bits));
-      const Word* row = of_bit.data() + bit * action_words_;
-      for (std::uint32_t k = 0; k < action_words_; ++k)
-        actions[k] |= row[k];
-    }
+const StepTable::Values& ZeroTimeReduction::writer_values(std::uint32_t action, const Word* state,
+                                                          Scratch& s) const {
+  const tioa::Automaton& automaton = generator_->automaton();
+  const tioa::ActionSignature& sig = automaton.actions()[action];
+  const tioa::Transition& t = automaton.transitions()[action];
+  if (t.bindings.empty())
+    return table_.box_values(action);
+  StepTable::Values& out = s.bound[action];
+  if (s.bound_stamp[action] == s.stamp)
+    return out.known ? out : table_.box_values(action);
+  s.bound_stamp[action] = s.stamp;
+  // Parameters bound to what only time changes take the same values all instant long: the
+  // writer's steps in this instant are those of its candidates here.
+  Word* probe = s.probe.data();
+  std::fill(probe, probe + words_, 0);
+  s.params.clear();
+  bool too_many = false;
+  tioa::for_each_candidate(sig, t, tioa::State(state, 0, probe, words_),
+                           [&](const tioa::Params& p) {
+                             if (s.params.size() < max_writer_steps)
+                               s.params.push_back(p);
+                             else
+                               too_many = true;
+                           });
+  out.known = !too_many;
+  for (std::uint32_t w = 0; w < words_ && out.known; ++w)
+    out.known = (probe[w] & ~table_.instant_constant()[w]) == 0;
+  if (!out.known)
+    return table_.box_values(action);
+  out.plain.assign(words_, 0);
+  out.sets.clear();
+  Word* reads = s.footprint_masks.data();
+  Word* writes = reads + words_;
+  for (const tioa::Params& p : s.params) {
+    std::fill(reads, reads + 2 * words_, 0);
+    s.declared.sets.clear();
+    s.declared.plain = out.plain.data();
+    tioa::Footprint f(reads, writes, 0, &s.declared);
+    automaton.footprint(action, p, f);
+    for (const auto& set : s.declared.sets)
+      out.sets.emplace_back(table_.field_of_bit(set.offset), set.code);
+  }
+  return out;
 }
 
-void ZeroTimeReduction::choose(const Word* actions, Scratch& s) const {
-  for (std::uint32_t k = 0; k < action_words_; ++k)
-    for (Word bits = actions[k]; bits != 0; bits &= bits - 1) {
-      const std::uint32_t b = k * 64 + static_cast<std::uint32_t>(__builtin_ctzll(bits));
-      if (!s.chosen[b]) {
-        s.chosen[b] = 1;
-        s.enabled_left -= s.first_enabled[b] != none ? 1 : 0;
-        s.work.push_back(b);
+bool ZeroTimeReduction::writes_only_current(std::uint32_t action, const Word* state,
+                                            const Word* mask, Scratch& s) const {
+  const StepTable::Values& v = writer_values(action, state, s);
+  if (!v.known || intersects(v.plain.data(), mask, words_))
+    return false;
+  const auto& fields = table_.fields();
+  return std::all_of(v.sets.begin(), v.sets.end(), [&](const std::pair<std::uint32_t, Word>& set) {
+    const StepTable::Field& f = fields[set.first];
+    return !overlaps(mask, f.offset, f.width) || field_code(state, f.offset, f.width) == set.second;
+  });
+}
+
+template <class Unchanged>
+bool ZeroTimeReduction::keeps_value(const Word* state, const Word* reads, Unchanged& unchanged,
+                                    Scratch& s) const {
+  const auto& fields = table_.fields();
+  const Word* constant = table_.instant_constant();
+  Word* region = s.region.data();
+  std::copy(reads, reads + words_, region);
+  Word* writers = s.writers.data();
+  Word* widened_part = s.masks.data() + 6 * std::size_t{words_}; // region minus reads
+  for (int round = 0; round < max_widenings; ++round) {
+    std::fill(s.writers.begin(), s.writers.end(), 0);
+    table_.gather_writers(region, writers);
+    for (std::uint32_t w = 0; w < words_; ++w)
+      widened_part[w] = region[w] & ~reads[w];
+    // The values the fields of the region may take along a path of steps outside the
+    // enabling set: those the other writers declare. A writer in the enabling set is in
+    // it for the bits of `reads` only.
+    s.values.clear();
+    bool declared = true;
+    for_each_action(writers, action_words_, [&](std::uint32_t b) {
+      if (!declared)
+        return;
+      const Word one = Word{1} << (b % 64);
+      const bool enabling = (s.enabling[b / 64] & one) && !(s.harmless[b / 64] & one);
+      const Word* part = enabling ? widened_part : region;
+      const StepTable::Values& v = writer_values(b, state, s);
+      if (!v.known || intersects(v.plain.data(), part, words_)) {
+        declared = false;
+        return;
       }
+      for (const auto& [field, code] : v.sets)
+        if (overlaps(part, fields[field].offset, fields[field].width))
+          s.values.emplace_back(field, code);
+    });
+    if (!declared)
+      return false;
+    std::sort(s.values.begin(), s.values.end());
+    s.values.erase(std::unique(s.values.begin(), s.values.end()), s.values.end());
+    std::erase_if(s.values, [&](const std::pair<std::uint32_t, Word>& v) {
+      return field_code(state, fields[v.first].offset, fields[v.first].width) == v.second;
+    });
+    s.value_fields.clear(); // index in s.values of each field's first value, then the end
+    for (std::size_t i = 0; i < s.values.size(); ++i)
+      if (i == 0 || s.values[i].first != s.values[i - 1].first)
+        s.value_fields.push_back(static_cast<std::uint32_t>(i));
+    s.value_fields.push_back(static_cast<std::uint32_t>(s.values.size()));
+    const std::size_t count = s.value_fields.size() - 1;
+    std::size_t combinations = 1;
+    for (std::size_t f = 0; f < count && combinations <= max_combinations; ++f)
+      combinations *= 1 + s.value_fields[f + 1] - s.value_fields[f];
+    if (combinations > max_combinations)
+      return false;
+    s.value_digits.assign(count, 0);
+    bool widened = false;
+    for (std::size_t c = 1; c < combinations; ++c) {
+      for (std::size_t f = 0; f < count; ++f) { // the next combination, as a counter
+        if (++s.value_digits[f] <= s.value_fields[f + 1] - s.value_fields[f])
+          break;
+        s.value_digits[f] = 0;
+      }
+      std::copy(state, state + words_, s.synthetic.begin());
+      tioa::State built(s.synthetic.data(), 0);
+      for (std::size_t f = 0; f < count; ++f)
+        if (s.value_digits[f] > 0) {
+          const auto& [field, code] = s.values[s.value_fields[f] + s.value_digits[f] - 1];
+          built.set_code(field_slot(fields[field]), code);
+        }
+      Word* probe = s.probe.data();
+      std::fill(probe, probe + words_, 0);
+      try {
+        if (!unchanged(tioa::State(s.synthetic.data(), 0, probe, words_)))
+          return false;
+      } catch (const std::exception&) {
+        return false; // a guard that cannot be evaluated there: assume it may change
+      }
+      for (std::uint32_t w = 0; w < words_; ++w)
+        if (probe[w] & ~(region[w] | constant[w])) {
+          region[w] |= probe[w];
+          widened = true;
+        }
     }
+    if (!widened)
+      return true;
+  }
+  return false;
 }
 
-void ZeroTimeReduction::add_writers(const Word* mask, Scratch& s) const {
-  std::fill(s.gathered.begin(), s.gathered.end(), 0);
-  gather(writers_of_bit_, mask, s.gathered.data());
-  choose(s.gathered.data(), s);
+template <class Unchanged>
+void ZeroTimeReduction::add_enablers(const Word* state, const Word* reads, Unchanged&& unchanged,
+                                     Scratch& s) const {
+  // Start from every writer of what the predicate read; leave out those whose declared
+  // values keep the predicate's value: first all of them at once (most often they do),
+  // else one at a time, each with those already left out.
+  std::fill(s.enabling.begin(), s.enabling.end(), 0);
+  table_.gather_writers(reads, s.enabling.data());
+  std::fill(s.harmless.begin(), s.harmless.end(), 0);
+  bool any_declared = false;
+  for_each_action(s.enabling.data(), action_words_, [&](std::uint32_t b) {
+    if (writer_values(b, state, s).known) {
+      s.harmless[b / 64] |= Word{1} << (b % 64);
+      any_declared = true;
+    }
+  });
+  if (any_declared && !keeps_value(state, reads, unchanged, s)) {
+    std::fill(s.harmless.begin(), s.harmless.end(), 0);
+    for_each_action(s.enabling.data(), action_words_, [&](std::uint32_t b) {
+      if (!writer_values(b, state, s).known)
+        return;
+      const Word one = Word{1} << (b % 64);
+      s.harmless[b / 64] |= one;
+      if (!keeps_value(state, reads, unchanged, s))
+        s.harmless[b / 64] &= ~one;
+    });
+  }
+  for (std::uint32_t k = 0; k < action_words_; ++k)
+    s.enabling[k] &= ~s.harmless[k];
+  for_each_action(s.enabling.data(), action_words_,
+                  [&](std::uint32_t b) { relate(b, nullptr, reads, s); });
+}
+
+void ZeroTimeReduction::relate(std::uint32_t b, const Word* reads, const Word* writes,
+                               Scratch& s) const {
+  bool grew = false;
+  if (!table_.small(b)) {
+    grew = !s.whole[b];
+    s.whole[b] = 1;
+  } else {
+    // Only the bits some step of b reads (writes) can make a step of it join.
+    Word* read_mask = s.read_mask.data() + std::size_t{b} * words_;
+    Word* write_mask = s.write_mask.data() + std::size_t{b} * words_;
+    const Word* may_read = table_.action_reads(b);
+    const Word* may_write = table_.action_writes(b);
+    for (std::uint32_t w = 0; w < words_; ++w) {
+      const Word more_reads = reads ? reads[w] & may_read[w] & ~read_mask[w] : 0;
+      const Word more_writes = writes ? writes[w] & may_write[w] & ~write_mask[w] : 0;
+      read_mask[w] |= more_reads;
+      write_mask[w] |= more_writes;
+      grew = grew || (more_reads | more_writes) != 0;
+    }
+  }
+  if (grew && !s.queued[b]) {
+    s.queued[b] = 1;
+    s.work.push_back(b);
+  }
+}
+
+void ZeroTimeReduction::process(std::uint32_t a, const Word* state, Scratch& s) const {
+  const tioa::Automaton& automaton = generator_->automaton();
+  s.pending.clear();
+  s.to_run.clear();
+  if (!table_.small(a)) {
+    // A large box: every step at once, the enabling set over what all its guards read.
+    if (s.done[a])
+      return;
+    s.done[a] = 1;
+    for (std::uint32_t k = s.first_enabled[a]; k < s.enabled.size() && s.enabled[k].action == a;
+         ++k)
+      if (!s.ran[k])
+        s.to_run.push_back(k);
+    const tioa::ActionSignature& sig = automaton.actions()[a];
+    const tioa::Transition& tr = automaton.transitions()[a];
+    if (s.enabled_left > 0) {
+      auto enabled_here = [&](const tioa::Params& p) {
+        for (std::uint32_t k = s.first_enabled[a]; k < s.enabled.size() && s.enabled[k].action == a;
+             ++k)
+          if (s.enabled[k].params == p)
+            return true;
+        return false;
+      };
+      add_enablers(
+          state, s.traces.data() + std::size_t{a} * words_,
+          [&](const tioa::State& t) {
+            bool none_new = true;
+            tioa::for_each_candidate(sig, tr, t, [&](const tioa::Params& p) {
+              if (none_new && tr.enabled(t, p) && !enabled_here(p))
+                none_new = false;
+            });
+            return none_new;
+          },
+          s);
+    }
+  } else {
+    const Word* read_mask = s.read_mask.data() + std::size_t{a} * words_;
+    const Word* write_mask = s.write_mask.data() + std::size_t{a} * words_;
+    const std::uint32_t first = table_.first_point(a), last = first + table_.point_count(a);
+    for (std::uint32_t i = first; i < last; ++i) {
+      if (s.covered[i] || !table_.accepted(i))
+        continue;
+      if (!intersects(table_.point_reads(i), read_mask, words_) &&
+          !intersects(table_.point_writes(i), write_mask, words_))
+        continue;
+      s.covered[i] = 1;
+      if (s.step_of_point[i] != none)
+        s.to_run.push_back(s.step_of_point[i]);
+      else
+        s.pending.push_back(i);
+    }
+    if (!s.pending.empty() && s.enabled_left > 0) {
+      // None of these steps, not enabled here, becomes enabled.
+      Word* reads = s.masks.data() + 3 * std::size_t{words_};
+      std::fill(reads, reads + words_, 0);
+      const tioa::State traced(state, 0, reads, words_);
+      for (const std::uint32_t i : s.pending)
+        (void)step_enabled(a, table_.params(i), traced);
+      add_enablers(
+          state, reads,
+          [&](const tioa::State& t) {
+            return std::none_of(s.pending.begin(), s.pending.end(), [&](std::uint32_t i) {
+              return step_enabled(a, table_.params(i), t);
+            });
+          },
+          s);
+    }
+  }
+  for (const std::uint32_t k : s.to_run)
+    run_and_relate(state, k, s);
+}
+
+void ZeroTimeReduction::run_and_relate(const Word* state, std::uint32_t k, Scratch& s) const {
+  if (s.ran[k])
+    return;
+  s.ran[k] = 1;
+  --s.enabled_left;
+  Word* reads = s.masks.data();
+  Word* writes = reads + words_;
+  Word* changed = writes + words_;
+  const std::size_t before = s.durations.size();
+  run_step(state, k, s, reads, writes, changed);
+  for (std::size_t j = before; j < s.durations.size(); ++j)
+    s.order.emplace_back(k, static_cast<std::uint32_t>(j));
+  if (s.enabled_left == 0)
+    return; // every enabled step is in: more steps change nothing
+  // Every step that reads what this one changed; every step that writes what it changed,
+  // or what it read or wrote (unless it can only write there the values they hold).
+  Word* untouched = s.masks.data() + 4 * std::size_t{words_}; // read or written, unchanged
+  Word* all = untouched + words_;
+  for (std::uint32_t w = 0; w < words_; ++w) {
+    untouched[w] = (reads[w] | writes[w]) & ~changed[w];
+    all[w] = reads[w] | writes[w] | changed[w];
+  }
+  Word* actions = s.related.data();
+  std::fill(s.related.begin(), s.related.end(), 0);
+  table_.gather_readers(changed, actions);
+  for_each_action(actions, action_words_, [&](std::uint32_t b) { relate(b, changed, nullptr, s); });
+  std::fill(s.related.begin(), s.related.end(), 0);
+  table_.gather_writers(all, actions);
+  for_each_action(actions, action_words_, [&](std::uint32_t b) {
+    if (writes_only_current(b, state, untouched, s))
+      relate(b, nullptr, changed, s);
+    else
+      relate(b, nullptr, all, s);
+  });
 }
 
 void ZeroTimeReduction::run_step(const Word* state, std::size_t k, Scratch& s, Word* reads,
-                                 Word* writes) const {
+                                 Word* writes, Word* changed) const {
   const tioa::Automaton& automaton = generator_->automaton();
   const Scratch::Step step = s.enabled[k];
   const tioa::Transition& t = automaton.transitions()[step.action];
-  Word* declared_reads = s.masks.data() + 4 * words_;
-  Word* declared_writes = s.masks.data() + 5 * words_;
-  Word* changed = s.masks.data() + 6 * words_;
+  Word* declared_reads = s.footprint_masks.data();
+  Word* declared_writes = declared_reads + words_;
+  Word* plain = declared_writes + words_;
   std::fill(reads, reads + words_, 0);
   std::fill(writes, writes + words_, 0);
-  std::fill(declared_reads, declared_reads + 3 * words_, 0); // and `changed`
-  tioa::Footprint declared(declared_reads, declared_writes, 0);
+  std::fill(changed, changed + words_, 0);
+  std::fill(declared_reads, declared_reads + 3 * words_, 0);
+  s.declared.sets.clear();
+  s.declared.plain = plain;
+  tioa::Footprint declared(declared_reads, declared_writes, 0, &s.declared);
   automaton.footprint(step.action, step.params, declared);
 
   const tioa::State from(state, 0, reads, words_);
-  (void)t.enabled(from, step.params); // traces what the guard reads
+  (void)step_enabled(step.action, step.params, from); // traces what the guard reads
   const std::uint32_t choices = t.choice_count(from, step.params);
+  auto fail = [&](const std::string& what, const Word* bits) {
+    throw tioa::ModelError("step " + automaton.actions()[step.action].label(step.params) + " " +
+                           what + " '" + first_variable(automaton.layout(), bits, words_) +
+                           "', outside the footprint it declares (needed by the partial-order "
+                           "reduction)");
+  };
   for (std::uint32_t c = 0; c < choices; ++c) {
     const std::size_t at = s.successors.size();
     s.successors.insert(s.successors.end(), state, state + words_);
     s.successors.push_back(0); // room for a field that spills into the next word
-    tioa::State to(s.successors.data() + at, 0, reads, words_);
+    tioa::State to(s.successors.data() + at, 0, reads, words_, writes);
     t.apply(to, step.params, c);
     s.successors.pop_back();
+    const Word* next = s.successors.data() + at;
     for (std::uint32_t w = 0; w < words_; ++w)
-      changed[w] |= s.successors[at + w] ^ state[w];
+      changed[w] |= next[w] ^ state[w];
+    // A field written only with declared values takes one of them (or keeps its own).
+    for (const auto& set : s.declared.sets) {
+      if (overlaps(plain, set.offset, set.width))
+        continue;
+      const Word now = field_code(next, set.offset, set.width);
+      if (now == field_code(state, set.offset, set.width))
+        continue;
+      const bool declared_value =
+          std::any_of(s.declared.sets.begin(), s.declared.sets.end(), [&](const auto& other) {
+            return other.offset == set.offset && other.code == now;
+          });
+      if (!declared_value) {
+        std::vector<Word> field(words_, 0);
+        tioa::set_bits(field.data(), set.offset, set.width);
+        fail("set a value (" + std::to_string(now) + " as a code) not declared to", field.data());
+      }
+    }
     s.durations.push_back(0);
   }
-  for (std::uint32_t w = 0; w < words_; ++w) {
-    changed[w] &= ~declared_writes[w];
-    writes[w] = declared_writes[w];
-  }
   auto outside = [&](const Word* used, const Word* allowed, const char* what) {
-    bool any = false;
-    for (std::uint32_t w = 0; w < words_; ++w)
-      any = any || (used[w] & ~allowed[w]) != 0;
-    if (!any)
-      return;
-    std::vector<Word> extra(words_);
-    for (std::uint32_t w = 0; w < words_; ++w)
-      extra[w] = used[w] & ~allowed[w];
-    throw tioa::ModelError(
-        "step " + automaton.actions()[step.action].label(step.params) + " " + what + " '" +
-        first_variable(automaton.layout(), extra.data(), words_) +
-        "', outside the footprint it declares (needed by the partial-order reduction)");
+    if (!std::equal(used, used + words_, allowed, [](Word u, Word a) { return (u & ~a) == 0; })) {
+      std::vector<Word> extra(words_);
+      for (std::uint32_t w = 0; w < words_; ++w)
+        extra[w] = used[w] & ~allowed[w];
+      fail(what, extra.data());
+    }
   };
   outside(reads, declared_reads, "read");
-  outside(changed, declared_writes, "wrote");
+  outside(writes, declared_writes, "wrote");
 }
 
 std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch& s) const {
   const tioa::Automaton& automaton = generator_->automaton();
   const tioa::Trajectories& trajectory = automaton.trajectory();
   const std::uint32_t words = words_;
-  const std::size_t actions = footprints_.size();
-  s.masks.assign(7 * words, 0);
-  Word* step_reads = s.masks.data();
-  Word* step_writes = s.masks.data() + words;
-  Word* tick_reads = s.masks.data() + 2 * words;
-  Word* invariant_reads = s.masks.data() + 3 * words;
+  const std::uint32_t actions = table_.actions();
+  s.masks.assign(7 * std::size_t{words}, 0);
+  Word* tick_reads = s.masks.data() + 3 * std::size_t{words};
   if (!trajectory.timed || !trajectory.stop_when ||
       !trajectory.stop_when(tioa::State(state, 0, tick_reads, words)))
     return std::nullopt; // time can pass here
 
-  // Every guard, each action's reads traced together.
-  s.traces.assign(actions * words, 0);
+  // Every enabled step; each action's guard and binder reads traced together.
+  s.traces.assign(std::size_t{actions} * words, 0);
   s.enabled.clear();
   s.first_enabled.assign(actions, none);
-  s.disabled.assign(actions, 0);
-  s.chosen.assign(actions, 0);
-  s.gathered.assign(action_words_, 0);
-  s.work.clear();
+  s.step_of_point.assign(table_.points(), none);
   const auto& signatures = automaton.actions();
   const auto& transitions = automaton.transitions();
   for (std::uint32_t a = 0; a < actions; ++a) {
     const tioa::ActionSignature& sig = signatures[a];
     const tioa::State from(state, 0, s.traces.data() + std::size_t{a} * words, words);
-    // Values a binder rules out are steps that are not enabled; what it read is traced.
-    if (!transitions[a].bindings.empty())
-      s.disabled[a] = 1;
     tioa::for_each_candidate(sig, transitions[a], from, [&](const tioa::Params& p) {
       if (transitions[a].enabled(from, p)) {
         if (s.first_enabled[a] == none)
           s.first_enabled[a] = static_cast<std::uint32_t>(s.enabled.size());
-        s.enabled.push_back({a, p});
-      } else {
-        if (sig.kind == tioa::ActionKind::input)
-          tioa::throw_input_not_enabled(sig, p);
-        s.disabled[a] = 1;
+        const std::uint32_t point = table_.point_of(a, p);
+        if (point != none)
+          s.step_of_point[point] = static_cast<std::uint32_t>(s.enabled.size());
+        s.enabled.push_back({a, point, p});
+      } else if (sig.kind == tioa::ActionKind::input) {
+        tioa::throw_input_not_enabled(sig, p);
       }
     });
   }
   if (s.enabled.size() <= 1)
     return std::nullopt;
-  s.enabled_left = 0;
-  for (std::uint32_t a = 0; a < actions; ++a)
-    s.enabled_left += s.first_enabled[a] != none ? 1 : 0;
 
-  // The stubborn set, action by action; the steps of a chosen action run as it is chosen.
+  s.covered.assign(table_.points(), 0);
+  s.whole.assign(actions, 0);
+  s.done.assign(actions, 0);
+  s.queued.assign(actions, 0);
+  s.ran.assign(s.enabled.size(), 0);
+  s.read_mask.assign(std::size_t{actions} * words, 0);
+  s.write_mask.assign(std::size_t{actions} * words, 0);
+  s.enabling.assign(action_words_, 0);
+  s.harmless.assign(action_words_, 0);
+  s.writers.assign(action_words_, 0);
+  s.related.assign(action_words_, 0);
+  s.region.assign(words, 0);
+  s.probe.assign(words, 0);
+  s.synthetic.assign(words, 0);
+  s.footprint_masks.assign(3 * std::size_t{words}, 0);
+  ++s.stamp;
+  if (s.bound.size() != actions) {
+    s.bound.assign(actions, {});
+    s.bound_stamp.assign(actions, 0);
+  }
+  s.work.clear();
+  s.enabled_left = static_cast<std::uint32_t>(s.enabled.size());
   s.successors.clear();
   s.durations.clear();
-  auto& order = s.order;
-  order.clear();
-  add_writers(tick_reads, s);
+  s.order.clear();
+
+  // The stubborn set.
+  add_enablers(
+      state, tick_reads, [&](const tioa::State& t) { return trajectory.stop_when(t); }, s);
   if (invariant_) {
-    (void)invariant_(tioa::State(state, 0, invariant_reads, words));
-    add_writers(invariant_reads, s);
+    Word* reads = tick_reads; // done with
+    std::fill(reads, reads + words, 0);
+    const bool holds = invariant_(tioa::State(state, 0, reads, words));
+    add_enablers(
+        state, reads, [&](const tioa::State& t) { return invariant_(t) == holds; }, s);
   }
   for (;;) {
     while (!s.work.empty()) {
       const std::uint32_t a = s.work.back();
       s.work.pop_back();
-      // Once every enabled action is in, more actions change nothing: only the steps of
-      // those in the set still run.
-      if (s.disabled[a] && s.enabled_left > 0)
-        add_writers(s.traces.data() + std::size_t{a} * words, s);
-      for (std::uint32_t k = s.first_enabled[a]; k < s.enabled.size() && s.enabled[k].action == a;
-           ++k) {
-        const std::size_t before = s.durations.size();
-        run_step(state, k, s, step_reads, step_writes);
-        for (std::size_t j = before; j < s.durations.size(); ++j)
-          order.emplace_back(k, static_cast<std::uint32_t>(j));
-        // Every action that reads or writes what the step writes, or writes what it read.
-        if (s.enabled_left == 0)
-          continue;
-        std::fill(s.gathered.begin(), s.gathered.end(), 0);
-        gather(readers_of_bit_, step_writes, s.gathered.data());
-        gather(writers_of_bit_, step_writes, s.gathered.data());
-        gather(writers_of_bit_, step_reads, s.gathered.data());
-        choose(s.gathered.data(), s);
-      }
+      s.queued[a] = 0;
+      process(a, state, s);
     }
     // The set needs a step with a successor (a step with no choice has none): when it has
-    // none yet, the first enabled action not in it joins.
-    if (!order.empty())
+    // none yet, the first enabled step not in it joins.
+    if (!s.order.empty())
       break;
-    const auto next =
-        std::find_if(s.enabled.begin(), s.enabled.end(),
-                     [&](const Scratch::Step& step) { return !s.chosen[step.action]; });
-    if (next == s.enabled.end())
+    const auto next = std::find(s.ran.begin(), s.ran.end(), 0);
+    if (next == s.ran.end())
       break; // every enabled step ran and none has a successor: the state has none
-    s.chosen[next->action] = 1;
-    --s.enabled_left;
-    s.work.push_back(next->action);
+    const auto k = static_cast<std::uint32_t>(next - s.ran.begin());
+    if (s.enabled[k].point != none)
+      s.covered[s.enabled[k].point] = 1;
+    run_and_relate(state, k, s);
   }
-  if (std::any_of(s.enabled.begin(), s.enabled.end(),
-                  [&](const Scratch::Step& step) { return !s.chosen[step.action]; }))
+  if (s.enabled_left > 0)
     ++s.reduced;
 
   // In the order of a full expansion: by action, parameters, choice.
-  std::sort(order.begin(), order.end());
+  std::sort(s.order.begin(), s.order.end());
   std::vector<Word>& sorted = s.sorted;
   sorted.clear();
-  for (const auto& [step, at] : order)
+  for (const auto& [step, at] : s.order)
     sorted.insert(sorted.end(), s.successors.begin() + std::size_t{at} * words,
                   s.successors.begin() + std::size_t{at + 1} * words);
   s.successors.swap(sorted);
-  return order.size();
+  return s.order.size();
 }
 
 } // namespace checker

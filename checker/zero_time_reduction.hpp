@@ -5,31 +5,43 @@
 // (the stop-when condition holds) until some instantaneous steps have been taken, and
 // those steps (GPS updates, time updates, deliveries, ...) mostly touch different
 // components, so a full search explores every interleaving of them. At such a state this
-// explores only a stubborn set of steps (Valmari), built from what each step reads and
-// writes (tioa/footprint.hpp):
+// explores only a stubborn set of steps (Valmari), built step by step (an action with
+// given parameters) from what each step reads and writes (tioa/footprint.hpp):
 //
 //  - the tick is a step that depends on every other one; it is disabled here, so the set
-//    holds every action that may write what the stop-when condition read in this state
-//    (its necessary enabling set: until one of them runs, time still cannot pass);
-//  - for the checked predicate (an invariant), every action that may write what the
+//    holds its necessary enabling set: the steps that may change what the stop-when
+//    condition read in this state (until one of them runs, time still cannot pass);
+//  - for the checked predicate (an invariant), the steps that may change what the
 //    predicate read in this state (until one of them runs, it keeps its value);
-//  - for an action in the set with a step not enabled here, every action that may write
-//    what its guard read here;
-//  - for a step in the set that is enabled here, every action that may read what it
-//    writes, or write what it reads or writes (here: what it read when its guard and
-//    effect ran in this state).
+//  - for a step in the set that is not enabled here, the steps that may change what its
+//    guard (and the binders of its parameters) read here;
+//  - for a step in the set that is enabled here, every step that may read what it
+//    changed, or write what it wrote or read (what its guard and effect read and wrote
+//    when they ran in this state), except steps that can only write there the values
+//    those variables already hold;
 //  - at least one enabled step that has a successor (a step with no choice has none).
-// Reads are traced as the guards and effects run (tioa/state.hpp); writes are the
-// footprints the model declares, or the whole component that owns the step. Every step
-// run here is checked against its declared footprint: a read or write outside it is a
-// ModelError.
+// "The steps that may change what a predicate read" are first the steps that may write
+// those bits. Within one instant some of them cannot change the predicate's value: a
+// writer whose footprint declares the values it may write (Footprint::sets), and whose
+// parameters are bound to what only time changes (so they are fixed within the
+// instant), can only move those variables to the values it declares. When the predicate
+// keeps its value on every combination of those values (each state so built is
+// evaluated, and what it reads beyond the first reads is added, up to a few rounds),
+// such a writer is left out. A guard waiting for clock = 2 stays false in an instant
+// where every step that may write the clock sets it to the current time 0.
+//
+// Reads are traced as the guards and effects run (tioa/state.hpp), and so are writes;
+// the other steps' reads and writes are the footprints the model declares, or the whole
+// component that owns the step. Every step run here is checked against its declared
+// footprint and values: a read, write or value outside it is a ModelError.
 //
 // Why it is sound for what the checks using it ask (a state where the predicate fails, a
 // state with no successor, a state where time cannot pass and nothing can happen):
 //  * a path from this state that avoids the set changes nothing the stop-when
-//    condition, the predicate or an enabled step of the set read, so along it time cannot
-//    pass, the predicate keeps its value and that step stays enabled: every path to a
-//    state the check looks for contains a step of the set;
+//    condition, the predicate or an enabled step of the set read, except to values on
+//    which they keep their value, so along it time cannot pass (the bits only time
+//    changes stay as they are), the predicate keeps its value and that step stays
+//    enabled: every path to a state the check looks for contains a step of the set;
 //  * the first such step commutes with every step before it (none of them is in the set,
 //    so none touches what it reads or writes): it can be moved to the front, and the
 //    search, which takes it here, reaches the same state by a path one step shorter.
@@ -42,7 +54,7 @@
 #include <optional>
 #include <vector>
 
-#include "tioa/action_footprints.hpp"
+#include "checker/step_table.hpp"
 #include "tioa/successors.hpp"
 
 namespace checker {
@@ -58,21 +70,40 @@ public:
   struct Scratch {
     std::vector<Word> successors; // the chosen successors, words() each
     std::vector<std::uint32_t> durations;
-    std::vector<Word> traces; // per action: what its guards read (words() each)
-    std::vector<Word> masks;  // one step's reads and writes, the predicate's and tick's reads
     struct Step {
       std::uint32_t action;
+      std::uint32_t point; // in the step table (StepTable::none: its box is too large)
       tioa::Params params;
     };
     std::vector<Step> enabled;
     std::vector<std::uint32_t> first_enabled; // per action: its first step in `enabled`
-    std::vector<std::uint8_t> disabled;       // per action: a step of its box is not enabled
-    std::vector<std::uint8_t> chosen;         // per action: in the stubborn set
-    std::vector<std::uint32_t> work;
-    std::vector<Word> gathered;     // a bit set of actions
-    std::uint32_t enabled_left = 0; // actions with an enabled step not in the set yet
+    std::vector<std::uint32_t> step_of_point; // per point: its index in `enabled`, or none
+    std::vector<std::uint8_t> covered;        // per point: in the set already
+    std::vector<std::uint8_t> whole;          // per action with a large box: every step in the set
+    std::vector<std::uint8_t> done;           // per action with a large box: its steps handled
+    std::vector<std::uint8_t> ran;            // per step of `enabled`: run
+    std::vector<std::uint8_t> queued;         // per action: on `work`
+    std::vector<Word> read_mask, write_mask;  // per action: its steps that read, write these
+    std::vector<Word> traces;                 // per action: what its guards read (whole)
+    std::vector<std::uint32_t> work, pending, to_run;
+    std::uint32_t enabled_left = 0;                             // enabled steps not run yet
     std::vector<std::pair<std::uint32_t, std::uint32_t>> order; // (step, successor)
-    std::vector<Word> sorted, state;
+    std::vector<Word> sorted;
+    std::vector<Word> masks; // a step's reads, writes, changes; predicate reads; scratch
+    // Necessary enabling sets (add_enablers): the bits a predicate read, widened; a state
+    // built from declared values and what the predicate read on it; the values the
+    // fields may take, as (field, code).
+    std::vector<Word> region, synthetic, probe;
+    std::vector<std::pair<std::uint32_t, Word>> values;
+    std::vector<std::uint32_t> value_fields, value_digits;
+    std::vector<Word> enabling, harmless, writers, related; // bit sets of actions
+    std::vector<Word> footprint_masks;                      // reads, writes of one footprint
+    tioa::DeclaredValues declared;
+    std::vector<tioa::Params> params;
+    // Per action with bound parameters, its values in this state's instant.
+    std::vector<StepTable::Values> bound;
+    std::vector<std::uint32_t> bound_stamp;
+    std::uint32_t stamp = 0;
     std::uint64_t reduced = 0; // states where fewer steps than enabled were taken
   };
 
@@ -83,23 +114,44 @@ public:
   std::optional<std::size_t> reduce(const Word* state, Scratch& scratch) const;
 
 private:
-  // ORs into `actions` (a bit set of actions) the row of `of_bit` of each bit of `mask`.
-  void gather(const std::vector<Word>& of_bit, const Word* mask, Word* actions) const;
-  // Puts in the set every action of the bit set `actions` not in it yet.
-  void choose(const Word* actions, Scratch& s) const;
-  // Puts in the set every action not in it that may write what `mask` holds.
-  void add_writers(const Word* mask, Scratch& s) const;
+  // Adds to action `b`'s share of the set its steps that read `reads` or write `writes`
+  // (either may be null); queues it when that adds anything.
+  void relate(std::uint32_t b, const Word* reads, const Word* writes, Scratch& s) const;
+  // Puts in the set the steps of `a` its masks now cover: runs the enabled ones, adds the
+  // enabling sets of the others.
+  void process(std::uint32_t a, const Word* state, Scratch& s) const;
+  // Runs step `k` of scratch.enabled and puts in the set the steps it depends on.
+  void run_and_relate(const Word* state, std::uint32_t k, Scratch& s) const;
   // Runs step `k` of scratch.enabled: appends its successors, checks its declared
-  // footprint, and leaves what it read and wrote in `reads`, `writes`.
-  void run_step(const Word* state, std::size_t k, Scratch& s, Word* reads, Word* writes) const;
+  // footprint and values, and leaves what it read, wrote and changed in `reads`,
+  // `writes`, `changed`.
+  void run_step(const Word* state, std::size_t k, Scratch& s, Word* reads, Word* writes,
+                Word* changed) const;
+  // Puts in the set a necessary enabling set for a change of a predicate that read
+  // `reads` in `state`: `unchanged(t)` says whether it has its value of `state` in the
+  // state t (whose reads it traces).
+  template <class Unchanged>
+  void add_enablers(const Word* state, const Word* reads, Unchanged&& unchanged, Scratch& s) const;
+  // Whether the predicate keeps its value in every state where the fields it read hold
+  // values that the writers not in s.enabling (or in s.harmless) declare; a writer in
+  // s.enabling and not in s.harmless is left out for the bits of `reads` only.
+  template <class Unchanged>
+  bool keeps_value(const Word* state, const Word* reads, Unchanged& unchanged, Scratch& s) const;
+  // What `action` may write within this instant: over its box, or, when its parameters
+  // are bound to what only time changes, over the steps those values give.
+  const StepTable::Values& writer_values(std::uint32_t action, const Word* state, Scratch& s) const;
+  // Whether `action` can only write, on the fields of `mask`, the values they hold.
+  bool writes_only_current(std::uint32_t action, const Word* state, const Word* mask,
+                           Scratch& s) const;
+  // Whether step `params` of `action` is enabled in `state` (binders included).
+  bool step_enabled(std::uint32_t action, const tioa::Params& params,
+                    const tioa::State& state) const;
 
   const tioa::SuccessorGenerator* generator_;
   tioa::StatePredicate invariant_;
-  std::vector<tioa::ActionFootprint> footprints_; // per action, over its whole box
+  StepTable table_;
   std::uint32_t words_;
   std::uint32_t action_words_; // words of a bit set of actions
-  // Per bit of the state, the bit set of the actions that may write it, and read it.
-  std::vector<Word> writers_of_bit_, readers_of_bit_;
 };
 
 } // namespace checker

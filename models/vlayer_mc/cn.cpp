@@ -56,9 +56,9 @@ tioa::Automaton cn(const VlConfig& c, int p) {
         if (!s.is_bottom(target) && !reachable(m[0], s[target], m[1]))
           s.set_bottom(target);
       })
-      .footprint([=](const Params&, tioa::Footprint& f) {
+      .footprint([=](const Params& m, tioa::Footprint& f) {
         f.reads(x).reads(clock).reads(target);
-        f.writes(x).writes(clock).writes(v).writes(target);
+        f.sets(x, m[0]).sets(clock, m[1]).sets_bottom(v).sets_bottom(target);
       });
   a.output(names::vcast_cn_update(p), {{"l", 0, points - 1}})
       .pre([=](const State& s, const Params& m) { return cn_update_due(s) && m[0] == s[x]; })
@@ -68,7 +68,7 @@ tioa::Automaton cn(const VlConfig& c, int p) {
         s.set_bottom(target);
       })
       .footprint([=](const Params&, tioa::Footprint& f) {
-        f.reads(clock).reads(since).reads(x).writes(since).writes(target);
+        f.reads(clock).reads(since).reads(x).sets(since, 0).sets_bottom(target);
       });
   a.input(names::vrcv_target_update(p), {{"u", 0, lattice.regions() - 1}, {"x", 0, points - 1}})
       .eff([=](State& s, const Params& m) {
@@ -80,15 +80,16 @@ tioa::Automaton cn(const VlConfig& c, int p) {
         s[target] = m[1];
       })
       .footprint(
-          [=](const Params&, tioa::Footprint& f) { f.reads(x).reads(clock).writes(target); });
+          [=](const Params& m, tioa::Footprint& f) { f.reads(x).reads(clock).sets(target, m[1]); });
   a.output(names::velocity(p), {{"v", zero_velocity, points - 1}})
       .pre([=](const State& s, const Params& m) { return velocity_due(s) && m[0] == desired(s); })
       .bind(
           "v",
           [=](const State& s, const Params&) -> std::optional<std::int32_t> { return desired(s); })
       .eff([=](State& s, const Params& m) { s[v] = m[0]; })
-      .footprint(
-          [=](const Params&, tioa::Footprint& f) { f.reads(v).reads(x).reads(target).writes(v); });
+      .footprint([=](const Params& m, tioa::Footprint& f) {
+        f.reads(v).reads(x).reads(target).sets(v, m[0]);
+      });
 
   const int delta = c.delta, vmax = c.vmax;
   a.trajectories(

@@ -28,11 +28,11 @@ tioa::Automaton rw(const VlConfig& c) {
         .bind("t", now)
         .eff([=](State& s, const Params&) { s[gps_age[p]] = 0; })
         .footprint([=](const Params&, tioa::Footprint& f) {
-          f.reads(gps_age[p]).reads(loc[p]).reads(now).writes(gps_age[p]);
+          f.reads(gps_age[p]).reads(loc[p]).reads(now).sets(gps_age[p], 0);
         });
     a.input(names::velocity(p), {{"v", zero_velocity, points - 1}})
         .eff([=](State& s, const Params& x) { s[vel[p]] = x[0]; })
-        .footprint([=](const Params&, tioa::Footprint& f) { f.writes(vel[p]); });
+        .footprint([=](const Params& x, tioa::Footprint& f) { f.sets(vel[p], x[0]); });
   }
 
   const int delta = c.delta, vmax = c.vmax, eps_sample = c.eps_sample;

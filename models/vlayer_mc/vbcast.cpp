@@ -33,7 +33,8 @@ tioa::Automaton vbcast(const VlConfig& c) {
   for (int p = 0; p < n; ++p) {
     a.input(names::gps_update(p), {{"l", 0, points - 1}, {"t", 0, c.delta - 1}})
         .eff([=](State& s, const Params& x) { s[reg[p]] = lattice.region_of(x[0]); })
-        .footprint([=](const Params&, tioa::Footprint& f) { f.writes(reg[p]); });
+        .footprint(
+            [=](const Params& x, tioa::Footprint& f) { f.sets(reg[p], lattice.region_of(x[0])); });
     a.input(names::vcast_prime_cn_update(p), {{"l", 0, points - 1}})
         .eff([=](State& s, const Params& x) {
           s[cn_pending[p]] =
@@ -41,8 +42,8 @@ tioa::Automaton vbcast(const VlConfig& c) {
           s[cn_age[p]] = 0;
           s[cn_loc[p]] = x[0];
         })
-        .footprint([=](const Params&, tioa::Footprint& f) {
-          f.reads(reg[p]).writes(cn_pending[p]).writes(cn_age[p]).writes(cn_loc[p]);
+        .footprint([=](const Params& x, tioa::Footprint& f) {
+          f.reads(reg[p]).writes(cn_pending[p]).sets(cn_age[p], 0).sets(cn_loc[p], x[0]);
         });
   }
   for (int u = 0; u < regions; ++u) {
@@ -53,8 +54,8 @@ tioa::Automaton vbcast(const VlConfig& c) {
           s[vn_age[u]] = 0;
           s[vn_count[u]] = x[0];
         })
-        .footprint([=](const Params&, tioa::Footprint& f) {
-          f.writes(vn_mask[u]).writes(vn_age[u]).writes(vn_count[u]);
+        .footprint([=](const Params& x, tioa::Footprint& f) {
+          f.sets(vn_mask[u], (1 << nbrs.size()) - 1).sets(vn_age[u], 0).sets(vn_count[u], x[0]);
         });
     a.input(names::vcast_target_update(u), {{"p", 0, n - 1}, {"x", 0, points - 1}})
         .eff([=](State& s, const Params& x) {
@@ -65,7 +66,8 @@ tioa::Automaton vbcast(const VlConfig& c) {
         })
         .footprint([=](const Params& x, tioa::Footprint& f) {
           const int slot = u * n + x[0];
-          f.reads(reg[x[0]]).writes(tu_pending[slot]).writes(tu_age[slot]).writes(tu_target[slot]);
+          f.reads(reg[x[0]]).writes(tu_pending[slot]).sets(tu_age[slot], 0);
+          f.sets(tu_target[slot], x[1]);
         });
   }
 
@@ -85,7 +87,7 @@ tioa::Automaton vbcast(const VlConfig& c) {
         })
         .footprint([=](const Params& x, tioa::Footprint& f) {
           f.reads(cn_pending[x[0]]).reads(cn_loc[x[0]]);
-          f.writes(cn_pending[x[0]]).writes(cn_age[x[0]]);
+          f.sets(cn_pending[x[0]], false).sets(cn_age[x[0]], 0);
         });
     a.output(names::vrcv_vn_update(v), {{"g", 0, regions - 1}, {"n", 0, n}})
         .pre([=](const State& s, const Params& x) {
@@ -107,7 +109,7 @@ tioa::Automaton vbcast(const VlConfig& c) {
         })
         .footprint([=](const Params& x, tioa::Footprint& f) {
           f.reads(vn_mask[x[0]]).reads(vn_count[x[0]]);
-          f.writes(vn_mask[x[0]]).writes(vn_age[x[0]]);
+          f.writes(vn_mask[x[0]]).sets(vn_age[x[0]], 0);
         });
   }
   for (int p = 0; p < n; ++p)
@@ -128,7 +130,7 @@ tioa::Automaton vbcast(const VlConfig& c) {
         .footprint([=](const Params& x, tioa::Footprint& f) {
           const int slot = x[0] * n + p;
           f.reads(tu_pending[slot]).reads(tu_target[slot]);
-          f.writes(tu_pending[slot]).writes(tu_age[slot]);
+          f.sets(tu_pending[slot], false).sets(tu_age[slot], 0);
         });
 
   a.trajectories(

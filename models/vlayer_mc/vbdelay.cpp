@@ -21,8 +21,9 @@ tioa::Automaton vbdelay(const VlConfig& c, int p) {
         s[age] = 0;
         s[loc] = x[0];
       })
-      .footprint(
-          [=](const Params&, tioa::Footprint& f) { f.writes(held).writes(age).writes(loc); });
+      .footprint([=](const Params& x, tioa::Footprint& f) {
+        f.sets(held, true).sets(age, 0).sets(loc, x[0]);
+      });
   a.output(names::vcast_prime_cn_update(p), {{"l", 0, points - 1}})
       .pre([=](const State& s, const Params& x) { return s[held] && x[0] == s[loc]; })
       .bind("l", loc)
@@ -31,7 +32,7 @@ tioa::Automaton vbdelay(const VlConfig& c, int p) {
         s[age] = 0;
       })
       .footprint([=](const Params&, tioa::Footprint& f) {
-        f.reads(held).reads(loc).writes(held).writes(age);
+        f.reads(held).reads(loc).sets(held, false).sets(age, 0);
       });
   a.trajectories(
       [=](State& s) {

@@ -58,10 +58,10 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
           for (int p = 0; p < n; ++p)
             s.set_bottom(M[p]);
       })
-      .footprint([=](const Params&, tioa::Footprint& f) {
-        f.reads(clock).writes(clock);
-        for (const auto& m : M)
-          f.writes(m);
+      .footprint([=](const Params& m, tioa::Footprint& f) {
+        f.reads(clock).sets(clock, m[0]);
+        for (const auto& reports : M)
+          f.sets_bottom(reports);
       });
   a.input(names::vrcv_cn_update(u), {{"p", 0, n - 1}, {"l", 0, points - 1}})
       .eff([=](State& s, const Params& m) {
@@ -69,7 +69,7 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
         if (!s.is_bottom(clock) && collecting(s[clock]) && lattice.region_of(m[1]) == u)
           s[M[m[0]]] = m[1];
       })
-      .footprint([=](const Params& m, tioa::Footprint& f) { f.reads(clock).writes(M[m[0]]); });
+      .footprint([=](const Params& m, tioa::Footprint& f) { f.reads(clock).sets(M[m[0]], m[1]); });
   a.input(names::vrcv_vn_update(u), {{"g", 0, regions - 1}, {"n", 0, n}})
       .eff([=](State& s, const Params& m) {
         const auto at = std::find(nbrs.begin(), nbrs.end(), m[0]);
@@ -79,7 +79,7 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
       .footprint([=](const Params& m, tioa::Footprint& f) {
         const auto at = std::find(nbrs.begin(), nbrs.end(), m[0]);
         if (at != nbrs.end())
-          f.writes(V.items[static_cast<std::size_t>(at - nbrs.begin())]);
+          f.sets(V.items[static_cast<std::size_t>(at - nbrs.begin())], m[1]);
       });
   a.output(names::vcast_vn_update(u), {{"n", 0, n}})
       .pre([=](const State& s, const Params& m) {
@@ -90,7 +90,7 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
           [=](const State& s, const Params&) -> std::optional<std::int32_t> { return reported(s); })
       .eff([=](State& s, const Params&) { s[since] = 0; })
       .footprint([=](const Params&, tioa::Footprint& f) {
-        f.reads(clock).reads(since).writes(since);
+        f.reads(clock).reads(since).sets(since, 0);
         for (const auto& m : M)
           f.reads(m);
       });
@@ -118,11 +118,11 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
         s[since] = 0;
       })
       .footprint([=](const Params&, tioa::Footprint& f) {
-        f.reads(clock).reads(since).writes(since);
+        f.reads(clock).reads(since).sets(since, 0);
         for (int p = 0; p < n; ++p)
-          f.reads(M[p]).writes(M[p]).writes(out[p]);
+          f.reads(M[p]).sets_bottom(M[p]).writes(out[p]);
         for (const auto& count : V)
-          f.reads(count).writes(count);
+          f.reads(count).sets(count, 0);
       });
   a.output(names::vcast_target_update(u), {{"p", 0, n - 1}, {"x", 0, points - 1}})
       .pre([=](const State& s, const Params& m) {
@@ -136,7 +136,7 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
             })
       .eff([=](State& s, const Params& m) { s.set_bottom(out[m[0]]); })
       .footprint(
-          [=](const Params& m, tioa::Footprint& f) { f.reads(out[m[0]]).writes(out[m[0]]); });
+          [=](const Params& m, tioa::Footprint& f) { f.reads(out[m[0]]).sets_bottom(out[m[0]]); });
 
   const int delta = c.delta;
   a.trajectories(

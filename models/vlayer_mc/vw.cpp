@@ -18,7 +18,7 @@ tioa::Automaton vw(const VlConfig& c, bool vsa_faults) {
         .bind("t", now)
         .eff([=](State& s, const Params&) { s[age[u]] = 0; })
         .footprint(
-            [=](const Params&, tioa::Footprint& f) { f.reads(age[u]).reads(now).writes(age[u]); });
+            [=](const Params&, tioa::Footprint& f) { f.reads(age[u]).reads(now).sets(age[u], 0); });
     // VW owns fail_u and restart_u (line 577). Without vsa_faults they are outputs that are
     // never enabled, so Fail(VN_u)'s inputs are closed and never fire (finding F2).
     for (const std::string& action : {names::fail_vn(u), names::restart_vn(u)})

@@ -5,6 +5,8 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -139,6 +141,26 @@ inline tioa::Automaton timed_countdown(int top, bool zeno = false) {
       s[x] = s[x] - 1;
   });
   return tioa::U(c);
+}
+
+// The reachable states of `a` where time can pass (its stop-when condition is false),
+// explored in full or with the zero-time reduction: the reduction must keep every one.
+inline std::set<Words> time_passing_states(const tioa::Automaton& a, bool por) {
+  const tioa::SuccessorGenerator generator(a);
+  std::optional<checker::ZeroTimeReduction> reduction;
+  if (por)
+    reduction.emplace(generator, tioa::StatePredicate{});
+  const checker::Exploration ex =
+      checker::explore(generator, a.start(), checker::ExploreOptions{}, checker::hooks(),
+                       reduction ? &*reduction : nullptr);
+  std::set<Words> out;
+  const auto& stop_when = a.trajectory().stop_when;
+  for (checker::StateId id = 0; id < ex.store.size(); ++id) {
+    const Word* s = ex.store.state(id);
+    if (!stop_when || !stop_when(State(s, 0)))
+      out.emplace(s, s + a.words());
+  }
+  return out;
 }
 
 } // namespace checker_test

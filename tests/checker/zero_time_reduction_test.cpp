@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "checker/checks.hpp"
+#include "tests/checker/helpers.hpp"
 #include "tioa/compose.hpp"
 
 using namespace checker;
@@ -51,6 +52,66 @@ Automaton racer(int i, bool locks) {
       .pre([=](const State& s, const Params&) { return s[x] == 0; })
       .eff([=](State& s, const Params&) { s[x] = 2; });
   a.trajectories([](State&) {}, [=](const State& s) { return s[x] == 0 || (locks && s[x] == 2); });
+  return a;
+}
+
+// A sampler copies the time of its cycle (`now`, which only time changes) into `seen`
+// (declared: seen := t, with t bound to now) and fires the value it saw once, when it saw
+// its phase k; time cannot pass before it has sampled, nor while it owes the firing. Its
+// listener takes the value (declared: last := v) and must acknowledge it (acks counts up
+// to 2) before time passes. Within an instant whose time is not k, the sampler's write
+// cannot enable the firing: the reduction sees it from the declared value.
+Automaton sampler(int i, int period, int k) {
+  Automaton a("s" + std::to_string(i));
+  const auto now = a.integer("now", 0, period - 1, 0);
+  const auto seen = a.integer("seen", 0, period - 1, period - 1);
+  const auto fired = a.boolean("fired", false);
+  a.internal("sample" + std::to_string(i), {{"t", 0, period - 1}})
+      .pre([=](const State& s, const Params& m) { return s[seen] != s[now] && m[0] == s[now]; })
+      .bind("t", now)
+      .eff([=](State& s, const Params& m) { s[seen] = m[0]; })
+      .footprint(
+          [=](const Params& m, tioa::Footprint& f) { f.reads(now).reads(seen).sets(seen, m[0]); });
+  a.output("fire" + std::to_string(i), {{"v", 0, period - 1}})
+      .pre([=](const State& s, const Params& m) {
+        return s[seen] == s[now] && s[seen] == k && !s[fired] && m[0] == s[seen];
+      })
+      .bind("v", seen)
+      .eff([=](State& s, const Params&) { s[fired] = true; })
+      .footprint([=](const Params&, tioa::Footprint& f) {
+        f.reads(seen).reads(now).reads(fired).sets(fired, true);
+      });
+  a.trajectories(
+      [=](State& s) {
+        s[now] = (s[now] + 1) % period;
+        s[fired] = false;
+      },
+      [=](const State& s) { return s[seen] != s[now] || (s[seen] == k && !s[fired]); });
+  return a;
+}
+
+Automaton listener(int i, int period) {
+  Automaton a("l" + std::to_string(i));
+  const auto last = a.integer("last", 0, period - 1, 0);
+  const auto pending = a.boolean("pending", false);
+  const auto acks = a.integer("acks", 0, 2, 0);
+  a.input("fire" + std::to_string(i), {{"v", 0, period - 1}})
+      .eff([=](State& s, const Params& m) {
+        s[last] = m[0];
+        s[pending] = true;
+      })
+      .footprint(
+          [=](const Params& m, tioa::Footprint& f) { f.sets(last, m[0]).sets(pending, true); });
+  a.internal("ack" + std::to_string(i))
+      .pre([=](const State& s, const Params&) { return s[pending]; })
+      .eff([=](State& s, const Params&) {
+        s[pending] = false;
+        s[acks] = std::min<int>(s[acks] + 1, 2);
+      })
+      .footprint([=](const Params&, tioa::Footprint& f) {
+        f.reads(pending).reads(acks).sets(pending, false).writes(acks);
+      });
+  a.trajectories([](State&) {}, [=](const State& s) { return s[pending]; });
   return a;
 }
 
@@ -145,13 +206,19 @@ TEST_CASE("random small systems: the same verdicts with and without the reductio
   for (int round = 0; round < 40; ++round) {
     const int n = 2 + static_cast<int>(random() % 3);
     std::vector<Automaton> parts;
-    std::vector<int> workers_at;
+    std::vector<std::string> counters; // variables an invariant may bound
     for (int i = 0; i < n; ++i) {
-      if (random() % 3 == 0) {
+      const unsigned kind = random() % 4;
+      if (kind == 0) {
         parts.push_back(racer(i, random() % 2 == 0));
+      } else if (kind == 1) {
+        const int period = 2 + static_cast<int>(random() % 3);
+        parts.push_back(sampler(i, period, static_cast<int>(random() % period)));
+        parts.push_back(listener(i, period));
+        counters.push_back("l" + std::to_string(i) + ".acks");
       } else {
         parts.push_back(worker(i, 1 + static_cast<int>(random() % 3)));
-        workers_at.push_back(i);
+        counters.push_back("w" + std::to_string(i) + ".count");
       }
     }
     const Automaton system = tioa::compose("random", parts);
@@ -161,10 +228,13 @@ TEST_CASE("random small systems: the same verdicts with and without the reductio
     CHECK(reduced.verdict == full.verdict);
     CHECK(reduced.states <= full.states);
     reduced_somewhere += reduced.states < full.states ? 1 : 0;
-    if (!workers_at.empty()) {
-      const int i = workers_at[random() % workers_at.size()];
+    // Every state where time can pass is kept.
+    CHECK(checker_test::time_passing_states(system, true) ==
+          checker_test::time_passing_states(system, false));
+    if (!counters.empty()) {
+      const auto counter = tioa::find_variable<int>(system, counters[random() % counters.size()]);
       const int value = 1 + static_cast<int>(random() % 3);
-      const auto invariant = count_below(system, i, value);
+      const tioa::StatePredicate invariant = [=](const State& s) { return s[counter] < value; };
       const PropertyResult full_inv = check_invariant(system, invariant, with_por(false));
       const PropertyResult reduced_inv = check_invariant(system, invariant, with_por(true));
       CHECK(reduced_inv.verdict == full_inv.verdict);
@@ -176,6 +246,98 @@ TEST_CASE("random small systems: the same verdicts with and without the reductio
     }
   }
   CHECK(reduced_somewhere > 20);
+}
+
+TEST_CASE("a sampler's declared value keeps its firing out of the set in other instants", "[por]") {
+  // Two samplers with period 3 firing at phases 0 and 1, and their listeners. In full,
+  // the two samples of an instant interleave; reduced, when neither sample can enable a
+  // firing in this instant one order is enough.
+  const Automaton system = tioa::compose(
+      "samplers", {sampler(0, 3, 0), listener(0, 3), sampler(1, 3, 1), listener(1, 3)});
+  const PropertyResult full = check_no_deadlock(system, with_por(false));
+  const PropertyResult reduced = check_no_deadlock(system, with_por(true));
+  CHECK(full.verdict == Verdict::holds);
+  CHECK(reduced.verdict == Verdict::holds);
+  CHECK(reduced.states < full.states);
+  CHECK(checker_test::time_passing_states(system, true) ==
+        checker_test::time_passing_states(system, false));
+}
+
+TEST_CASE("a writer whose declared value enables a dependent step stays in the set", "[por]") {
+  // Each instant `write` sets x := 1, and `arm` arms (ready := true) the copy of x into y.
+  // When the copy runs before the write, y = 0; after it, y = 1. The write and the copy
+  // are dependent and the copy is not enabled at first: its enabling step (arm, whose
+  // declared value does enable it) must be in the set, or the instant ending with y = 0
+  // is lost.
+  Automaton a("pair");
+  const auto due_write = a.boolean("due_write", true);
+  const auto x = a.integer("x", 0, 1, 0);
+  const auto due_arm = a.boolean("due_arm", true);
+  const auto ready = a.boolean("ready", false);
+  const auto done = a.boolean("done", false);
+  const auto y = a.integer("y", 0, 1, 0);
+  a.internal("write")
+      .pre([=](const State& s, const Params&) { return s[due_write]; })
+      .eff([=](State& s, const Params&) {
+        s[due_write] = false;
+        s[x] = 1;
+      })
+      .footprint([=](const Params&, tioa::Footprint& f) {
+        f.reads(due_write).sets(due_write, false).sets(x, 1);
+      });
+  a.internal("arm")
+      .pre([=](const State& s, const Params&) { return s[due_arm]; })
+      .eff([=](State& s, const Params&) {
+        s[due_arm] = false;
+        s[ready] = true;
+      })
+      .footprint([=](const Params&, tioa::Footprint& f) {
+        f.reads(due_arm).sets(due_arm, false).sets(ready, true);
+      });
+  a.internal("copy")
+      .pre([=](const State& s, const Params&) { return s[ready] && !s[done]; })
+      .eff([=](State& s, const Params&) {
+        s[done] = true;
+        s[y] = s[x];
+      })
+      .footprint([=](const Params&, tioa::Footprint& f) {
+        f.reads(ready).reads(done).reads(x).sets(done, true).writes(y);
+      });
+  a.trajectories(
+      [=](State& s) {
+        s[due_write] = true;
+        s[due_arm] = true;
+        s[ready] = false;
+        s[done] = false;
+        s[x] = 0;
+      },
+      [=](const State& s) { return s[due_write] || s[due_arm] || (s[ready] && !s[done]); });
+  const auto full = checker_test::time_passing_states(a, false);
+  CHECK(checker_test::time_passing_states(a, true) == full);
+  bool y0 = false, y1 = false;
+  for (const auto& state : full) {
+    y0 = y0 || State(state.data(), 0)[y] == 0;
+    y1 = y1 || State(state.data(), 0)[y] == 1;
+  }
+  CHECK(y0);
+  CHECK(y1);
+}
+
+TEST_CASE("a step that sets a value its footprint does not declare is a model error", "[por]") {
+  Automaton liar("liar");
+  const auto due = liar.boolean("due", true);
+  const auto x = liar.integer("x", 0, 3, 0);
+  liar.internal("lie")
+      .pre([=](const State& s, const Params&) { return s[due]; })
+      .eff([=](State& s, const Params&) {
+        s[due] = false;
+        s[x] = 2;
+      })
+      .footprint([=](const Params&, tioa::Footprint& f) { f.reads(due).writes(due).sets(x, 1); });
+  liar.trajectories([=](State& s) { s[due] = true; }, [=](const State& s) { return s[due]; });
+  const Automaton system = tioa::compose("system", {liar, worker(1, 1)});
+  const tioa::StatePredicate anything = [](const State&) { return true; };
+  CHECK_THROWS_WITH(check_invariant(system, anything, with_por(true)), Catch::Contains("'liar.x'"));
 }
 
 TEST_CASE("a step with no choice gives no successor, reduced or not", "[por]") {
