@@ -32,11 +32,13 @@ std::string first_variable(const tioa::StateLayout& layout, const Word* outside,
   return "?";
 }
 
+// Whether `mask` has a bit in [offset, offset + width) (width at most 64).
 bool overlaps(const Word* mask, std::uint32_t offset, std::uint32_t width) {
-  for (std::uint32_t bit = offset; bit < offset + width; ++bit)
-    if ((mask[bit >> 6] >> (bit & 63)) & 1)
-      return true;
-  return false;
+  const std::uint32_t word = offset >> 6, shift = offset & 63;
+  const Word ones = width >= 64 ? ~Word{0} : (Word{1} << width) - 1;
+  if ((mask[word] >> shift) & ones)
+    return true;
+  return shift + width > 64 && (mask[word + 1] & (ones >> (64 - shift))) != 0;
 }
 
 bool intersects(const Word* a, const Word* b, std::uint32_t words) {
@@ -282,9 +284,11 @@ void ZeroTimeReduction::relate(std::uint32_t b, const Word* reads, const Word* w
 }
 
 void ZeroTimeReduction::process(std::uint32_t a, const Word* state, Scratch& s) const {
-  const tioa::Automaton& automaton = generator_->automaton();
-  s.pending.clear();
+  // The enabled steps run now; the enabling sets of the others wait (see enable_task):
+  // running steps may put every enabled step in the set first, and then they are not
+  // needed.
   s.to_run.clear();
+  const auto begin = static_cast<std::uint32_t>(s.task_points.size());
   if (!table_.small(a)) {
     // A large box: every step at once, the enabling set over what all its guards read.
     if (s.done[a])
@@ -294,28 +298,7 @@ void ZeroTimeReduction::process(std::uint32_t a, const Word* state, Scratch& s) 
          ++k)
       if (!s.ran[k])
         s.to_run.push_back(k);
-    const tioa::ActionSignature& sig = automaton.actions()[a];
-    const tioa::Transition& tr = automaton.transitions()[a];
-    if (s.enabled_left > 0) {
-      auto enabled_here = [&](const tioa::Params& p) {
-        for (std::uint32_t k = s.first_enabled[a]; k < s.enabled.size() && s.enabled[k].action == a;
-             ++k)
-          if (s.enabled[k].params == p)
-            return true;
-        return false;
-      };
-      add_enablers(
-          state, s.traces.data() + std::size_t{a} * words_,
-          [&](const tioa::State& t) {
-            bool none_new = true;
-            tioa::for_each_candidate(sig, tr, t, [&](const tioa::Params& p) {
-              if (none_new && tr.enabled(t, p) && !enabled_here(p))
-                none_new = false;
-            });
-            return none_new;
-          },
-          s);
-    }
+    s.tasks.push_back({a, none, none});
   } else {
     const Word* read_mask = s.read_mask.data() + std::size_t{a} * words_;
     const Word* write_mask = s.write_mask.data() + std::size_t{a} * words_;
@@ -330,27 +313,59 @@ void ZeroTimeReduction::process(std::uint32_t a, const Word* state, Scratch& s) 
       if (s.step_of_point[i] != none)
         s.to_run.push_back(s.step_of_point[i]);
       else
-        s.pending.push_back(i);
+        s.task_points.push_back(i);
     }
-    if (!s.pending.empty() && s.enabled_left > 0) {
-      // None of these steps, not enabled here, becomes enabled.
-      Word* reads = s.masks.data() + 3 * std::size_t{words_};
-      std::fill(reads, reads + words_, 0);
-      const tioa::State traced(state, 0, reads, words_);
-      for (const std::uint32_t i : s.pending)
-        (void)step_enabled(a, table_.params(i), traced);
-      add_enablers(
-          state, reads,
-          [&](const tioa::State& t) {
-            return std::none_of(s.pending.begin(), s.pending.end(), [&](std::uint32_t i) {
-              return step_enabled(a, table_.params(i), t);
-            });
-          },
-          s);
-    }
+    const auto end = static_cast<std::uint32_t>(s.task_points.size());
+    if (end > begin)
+      s.tasks.push_back({a, begin, end});
   }
   for (const std::uint32_t k : s.to_run)
     run_and_relate(state, k, s);
+}
+
+void ZeroTimeReduction::enable_task(const Scratch::Task& task, const Word* state,
+                                    Scratch& s) const {
+  const tioa::Automaton& automaton = generator_->automaton();
+  const std::uint32_t a = task.action;
+  if (task.begin == none) {
+    // A large box: no step of `a` that is not enabled here becomes enabled.
+    const tioa::ActionSignature& sig = automaton.actions()[a];
+    const tioa::Transition& tr = automaton.transitions()[a];
+    auto enabled_here = [&](const tioa::Params& p) {
+      for (std::uint32_t k = s.first_enabled[a]; k < s.enabled.size() && s.enabled[k].action == a;
+           ++k)
+        if (s.enabled[k].params == p)
+          return true;
+      return false;
+    };
+    add_enablers(
+        state, s.traces.data() + std::size_t{a} * words_,
+        [&](const tioa::State& t) {
+          bool none_new = true;
+          tioa::for_each_candidate(sig, tr, t, [&](const tioa::Params& p) {
+            if (none_new && tr.enabled(t, p) && !enabled_here(p))
+              none_new = false;
+          });
+          return none_new;
+        },
+        s);
+    return;
+  }
+  // None of these steps, not enabled here, becomes enabled.
+  const std::uint32_t* first = s.task_points.data() + task.begin;
+  const std::uint32_t* last = s.task_points.data() + task.end;
+  Word* reads = s.masks.data() + 3 * std::size_t{words_};
+  std::fill(reads, reads + words_, 0);
+  const tioa::State traced(state, 0, reads, words_);
+  for (const std::uint32_t* i = first; i != last; ++i)
+    (void)step_enabled(a, table_.params(*i), traced);
+  add_enablers(
+      state, reads,
+      [&](const tioa::State& t) {
+        return std::none_of(first, last,
+                            [&](std::uint32_t i) { return step_enabled(a, table_.params(i), t); });
+      },
+      s);
 }
 
 void ZeroTimeReduction::run_and_relate(const Word* state, std::uint32_t k, Scratch& s) const {
@@ -514,6 +529,8 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
     s.bound_stamp.assign(actions, 0);
   }
   s.work.clear();
+  s.tasks.clear();
+  s.task_points.clear();
   s.enabled_left = static_cast<std::uint32_t>(s.enabled.size());
   s.successors.clear();
   s.durations.clear();
@@ -530,12 +547,19 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
         state, reads, [&](const tioa::State& t) { return invariant_(t) == holds; }, s);
   }
   for (;;) {
-    while (!s.work.empty()) {
+    std::size_t next_task = 0;
+    while (s.enabled_left > 0 && (!s.work.empty() || next_task < s.tasks.size())) {
+      if (s.work.empty()) {
+        enable_task(s.tasks[next_task++], state, s);
+        continue;
+      }
       const std::uint32_t a = s.work.back();
       s.work.pop_back();
       s.queued[a] = 0;
       process(a, state, s);
     }
+    s.work.clear();
+    s.tasks.clear();
     // The set needs a step with a successor (a step with no choice has none): when it has
     // none yet, the first enabled step not in it joins.
     if (!s.order.empty())

@@ -85,7 +85,14 @@ public:
     std::vector<std::uint8_t> queued;         // per action: on `work`
     std::vector<Word> read_mask, write_mask;  // per action: its steps that read, write these
     std::vector<Word> traces;                 // per action: what its guards read (whole)
-    std::vector<std::uint32_t> work, pending, to_run;
+    std::vector<std::uint32_t> work, to_run;
+    // Enabling sets still to add: for the steps task_points[begin, end) of an action (or,
+    // begin = none, every step of an action with a large box).
+    struct Task {
+      std::uint32_t action, begin, end;
+    };
+    std::vector<Task> tasks;
+    std::vector<std::uint32_t> task_points;
     std::uint32_t enabled_left = 0;                             // enabled steps not run yet
     std::vector<std::pair<std::uint32_t, std::uint32_t>> order; // (step, successor)
     std::vector<Word> sorted;
@@ -117,9 +124,11 @@ private:
   // Adds to action `b`'s share of the set its steps that read `reads` or write `writes`
   // (either may be null); queues it when that adds anything.
   void relate(std::uint32_t b, const Word* reads, const Word* writes, Scratch& s) const;
-  // Puts in the set the steps of `a` its masks now cover: runs the enabled ones, adds the
-  // enabling sets of the others.
+  // Puts in the set the steps of `a` its masks now cover: runs the enabled ones, and
+  // leaves a task for the enabling set of the others.
   void process(std::uint32_t a, const Word* state, Scratch& s) const;
+  // Adds the enabling set of the steps of a task.
+  void enable_task(const Scratch::Task& task, const Word* state, Scratch& s) const;
   // Runs step `k` of scratch.enabled and puts in the set the steps it depends on.
   void run_and_relate(const Word* state, std::uint32_t k, Scratch& s) const;
   // Runs step `k` of scratch.enabled: appends its successors, checks its declared
