@@ -96,7 +96,9 @@ public:
     std::uint32_t enabled_left = 0;                             // enabled steps not run yet
     std::vector<std::pair<std::uint32_t, std::uint32_t>> order; // (step, successor)
     std::vector<Word> sorted;
-    std::vector<Word> masks; // a step's reads, writes, changes; predicate reads; scratch
+    // A run step's reads, writes, changes; a predicate's reads; what the step read or wrote
+    // and left unchanged, and all it touched; the widened part of a region.
+    std::vector<Word> masks;
     // Necessary enabling sets (add_enablers): the bits a predicate read, widened; a state
     // built from declared values and what the predicate read on it; the values the
     // fields may take, as (field, code).
@@ -104,7 +106,7 @@ public:
     std::vector<std::pair<std::uint32_t, Word>> values;
     std::vector<std::uint32_t> value_fields, value_digits;
     std::vector<Word> enabling, harmless, writers, related; // bit sets of actions
-    std::vector<Word> footprint_masks;                      // reads, writes of one footprint
+    std::vector<Word> footprint_masks; // one footprint's reads, writes, plain writes
     tioa::DeclaredValues declared;
     std::vector<tioa::Params> params;
     // Per action with bound parameters, its values in this state's instant.
