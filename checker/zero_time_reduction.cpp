@@ -19,19 +19,6 @@ constexpr std::size_t max_writer_steps = 4096;
 constexpr std::size_t max_combinations = 256;
 constexpr int max_widenings = 4;
 
-// The name of the variable that holds the first bit of `outside`.
-std::string first_variable(const tioa::StateLayout& layout, const Word* outside,
-                           std::uint32_t words) {
-  for (std::uint32_t w = 0; w < words; ++w)
-    if (outside[w]) {
-      const std::uint32_t bit = w * 64 + static_cast<std::uint32_t>(__builtin_ctzll(outside[w]));
-      for (const auto& v : layout.variables())
-        if (bit >= v.offset && bit < v.offset + v.width)
-          return v.name;
-    }
-  return "?";
-}
-
 // Whether `mask` has a bit in [offset, offset + width) (width at most 64).
 bool overlaps(const Word* mask, std::uint32_t offset, std::uint32_t width) {
   const std::uint32_t word = offset >> 6, shift = offset & 63;
@@ -68,6 +55,19 @@ ZeroTimeReduction::ZeroTimeReduction(const tioa::SuccessorGenerator& generator,
                                      tioa::StatePredicate invariant)
     : generator_(&generator), invariant_(std::move(invariant)), table_(generator.automaton()),
       words_(generator.words()), action_words_(table_.action_words()) {}
+
+std::string ZeroTimeReduction::first_variable(const Word* bits) const {
+  // The step table numbers fields as the layout numbers its variables.
+  const auto& variables = generator_->automaton().layout().variables();
+  for (std::uint32_t w = 0; w < words_; ++w)
+    if (bits[w]) {
+      const std::uint32_t bit = w * 64 + static_cast<std::uint32_t>(__builtin_ctzll(bits[w]));
+      const std::uint32_t field = table_.field_of_bit(bit);
+      if (field != none)
+        return variables[field].name;
+    }
+  return "?";
+}
 
 bool ZeroTimeReduction::step_enabled(std::uint32_t action, const tioa::Params& params,
                                      const tioa::State& state) const {
@@ -426,7 +426,7 @@ void ZeroTimeReduction::run_step(const Word* state, std::size_t k, Scratch& s, W
   const std::uint32_t choices = t.choice_count(from, step.params);
   auto fail = [&](const std::string& what, const Word* bits) {
     throw tioa::ModelError("step " + automaton.actions()[step.action].label(step.params) + " " +
-                           what + " '" + first_variable(automaton.layout(), bits, words_) +
+                           what + " '" + first_variable(bits) +
                            "', outside the footprint it declares (needed by the partial-order "
                            "reduction)");
   };

@@ -52,6 +52,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "checker/step_table.hpp"
@@ -154,6 +155,8 @@ private:
   // Whether `action` can only write, on the fields of `mask`, the values they hold.
   bool writes_only_current(std::uint32_t action, const Word* state, const Word* mask,
                            Scratch& s) const;
+  // The name of the variable that holds the first bit of `bits`.
+  std::string first_variable(const Word* bits) const;
   // Whether step `params` of `action` is enabled in `state` (binders included).
   bool step_enabled(std::uint32_t action, const tioa::Params& params,
                     const tioa::State& state) const;
