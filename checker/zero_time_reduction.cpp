@@ -54,7 +54,19 @@ template <class Visit> void for_each_action(const Word* actions, std::uint32_t w
 ZeroTimeReduction::ZeroTimeReduction(const tioa::SuccessorGenerator& generator,
                                      tioa::StatePredicate invariant)
     : generator_(&generator), invariant_(std::move(invariant)), table_(generator.automaton()),
-      words_(generator.words()), action_words_(table_.action_words()) {}
+      words_(generator.words()), action_words_(table_.action_words()) {
+  // Every action reads and writes every bit some action touches: no step is independent
+  // of another, so every set holds every enabled step.
+  std::vector<Word> touched(words_, 0);
+  for (std::uint32_t a = 0; a < table_.actions(); ++a)
+    for (std::uint32_t w = 0; w < words_; ++w)
+      touched[w] |= table_.action_reads(a)[w] | table_.action_writes(a)[w];
+  can_reduce_ = false;
+  for (std::uint32_t a = 0; a < table_.actions() && !can_reduce_; ++a)
+    for (std::uint32_t w = 0; w < words_; ++w)
+      if (table_.action_reads(a)[w] != touched[w] || table_.action_writes(a)[w] != touched[w])
+        can_reduce_ = true;
+}
 
 std::string ZeroTimeReduction::first_variable(const Word* bits) const {
   // The step table numbers fields as the layout numbers its variables.
@@ -472,6 +484,8 @@ void ZeroTimeReduction::run_step(const Word* state, std::size_t k, Scratch& s, W
 }
 
 std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch& s) const {
+  if (!can_reduce_)
+    return std::nullopt;
   const tioa::Automaton& automaton = generator_->automaton();
   const tioa::Trajectories& trajectory = automaton.trajectory();
   const std::uint32_t words = words_;

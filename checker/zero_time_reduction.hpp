@@ -123,6 +123,12 @@ public:
   // runs the generator.
   std::optional<std::size_t> reduce(const Word* state, Scratch& scratch) const;
 
+  // Whether some set can be smaller than every enabled step: false when no action
+  // declares a footprint narrower than the whole state (e.g. Fischer), since then every
+  // step may read and write what every other one does. reduce() then returns nullopt at
+  // once: the search is the full one, without the cost of building sets.
+  bool can_reduce() const { return can_reduce_; }
+
 private:
   // Adds to action `b`'s share of the set its steps that read `reads` or write `writes`
   // (either may be null); queues it when that adds anything.
@@ -166,6 +172,7 @@ private:
   StepTable table_;
   std::uint32_t words_;
   std::uint32_t action_words_; // words of a bit set of actions
+  bool can_reduce_ = true;
 };
 
 } // namespace checker

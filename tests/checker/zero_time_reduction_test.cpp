@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "checker/checks.hpp"
+#include "checker/zero_time_reduction.hpp"
 #include "tests/checker/helpers.hpp"
 #include "tioa/compose.hpp"
 
@@ -143,6 +144,32 @@ TEST_CASE("independent zero-time steps are explored in one order", "[por]") {
   CHECK(full.states == 16 * 3 - 1);
   CHECK(reduced.states == 5 * 3 - 1);
   CHECK(reduced.reduced_states > 0);
+}
+
+TEST_CASE("with no footprint narrower than the whole state, nothing is reduced", "[por]") {
+  // The workers of one automaton, with no footprint declared: every step may touch the
+  // whole state, so the reduction cannot leave any out and the search is the full one.
+  Automaton system("workers");
+  const auto due = system.booleans("due", 3, true);
+  for (int i = 0; i < 3; ++i)
+    system.internal("work" + std::to_string(i))
+        .pre([=](const State& s, const Params&) { return s[due[i]]; })
+        .eff([=](State& s, const Params&) { s[due[i]] = false; });
+  system.trajectories(
+      [=](State& s) {
+        for (int i = 0; i < 3; ++i)
+          s[due[i]] = true;
+      },
+      [=](const State& s) { return s[due[0]] || s[due[1]] || s[due[2]]; });
+  const tioa::SuccessorGenerator generator(system);
+  CHECK_FALSE(ZeroTimeReduction(generator, {}).can_reduce());
+  const tioa::StatePredicate anything = [](const State&) { return true; };
+  const PropertyResult reduced = check_invariant(system, anything, with_por(true));
+  CHECK(reduced.por);
+  CHECK(reduced.states == 8); // every subset of the workers done
+  CHECK(reduced.reduced_states == 0);
+  // Composed, each worker's steps touch its own component only.
+  CHECK(ZeroTimeReduction(tioa::SuccessorGenerator(workers(3, 1)), {}).can_reduce());
 }
 
 TEST_CASE("the reduction finds the invariant violations a full search finds", "[por]") {
