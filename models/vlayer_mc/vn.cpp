@@ -1,9 +1,10 @@
 #include "models/vlayer_mc/vn.hpp"
 
 #include <algorithm>
+#include <memory>
 
 #include "models/vlayer_mc/names.hpp"
-#include "models/vlayer_mc/targets.hpp"
+#include "models/vlayer_mc/target_memo.hpp"
 
 namespace vlayer_mc {
 
@@ -94,21 +95,21 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
         for (const auto& m : M)
           f.reads(m);
       });
-  const VlConfig config = c;
+  const auto memo = std::make_shared<const TargetMemo>(c, u);
   a.internal("compute_" + std::to_string(u))
       .pre([=](const State& s, const Params&) { return at_phase(s, target_phase); })
       .eff([=](State& s, const Params&) {
-        std::vector<std::optional<Point>> heard(static_cast<std::size_t>(n));
+        // The reports and counts as the memo's key, in a buffer each thread keeps.
+        thread_local std::vector<std::int32_t> key;
+        key.clear();
         for (int p = 0; p < n; ++p)
-          if (!s.is_bottom(M[p]))
-            heard[static_cast<std::size_t>(p)] = s[M[p]];
-        std::vector<int> counts;
+          key.push_back(s.is_bottom(M[p]) ? TargetMemo::none : s[M[p]]);
         for (const auto& count : V)
-          counts.push_back(s[count]);
-        const auto targets = compute_targets(config, u, heard, counts);
+          key.push_back(s[count]);
+        const std::int32_t* targets = memo->targets(key);
         for (int p = 0; p < n; ++p) {
-          if (targets[static_cast<std::size_t>(p)])
-            s[out[p]] = *targets[static_cast<std::size_t>(p)];
+          if (targets[p] != TargetMemo::none)
+            s[out[p]] = targets[p];
           else
             s.set_bottom(out[p]);
           s.set_bottom(M[p]);

@@ -2,6 +2,7 @@
 // (assign and calctarget on the lattice).
 #include <catch2/catch.hpp>
 
+#include "models/vlayer_mc/target_memo.hpp"
 #include "models/vlayer_mc/targets.hpp"
 #include "models/vlayer_mc/vn.hpp"
 #include "tests/models/vlayer_mc/vl_helpers.hpp"
@@ -41,6 +42,41 @@ TEST_CASE("vlayer targets: the boundary reassigns to o_g (Fig. 7 lines 19–22, 
   c.nbh = mc::Neighbourhood::eight;
   CHECK(vlayer_mc::compute_targets(c, 2, in_two, {0, 0, 0}) ==
         Targets{l.centre(0), l.centre(1), l.point(1, 4)});
+}
+
+TEST_CASE("vlayer targets: the memo gives compute_targets' answer, computed once", "[vlayer]") {
+  vlayer_mc::VlConfig c;
+  c.rows = 2;
+  c.cols = 2;
+  c.robots = 3;
+  const vlayer_mc::Lattice l = c.lattice();
+  const vlayer_mc::TargetMemo memo(c, 2);
+  const std::int32_t none = vlayer_mc::TargetMemo::none;
+  // Every report of robots 0 and 1 in region 2 or none, robot 2 none, counts 0..1.
+  std::vector<std::int32_t> candidates{none};
+  for (vlayer_mc::Point p = 0; p < l.points(); ++p)
+    if (l.region_of(p) == 2)
+      candidates.push_back(p);
+  int compared = 0;
+  for (const std::int32_t r0 : candidates)
+    for (const std::int32_t r1 : candidates)
+      for (int v0 = 0; v0 <= 1; ++v0)
+        for (int v1 = 0; v1 <= 1; ++v1) {
+          std::vector<std::int32_t> key{r0, r1, none, v0, v1};
+          const std::int32_t* got = memo.targets(key);
+          Targets heard(3);
+          if (r0 != none)
+            heard[0] = r0;
+          if (r1 != none)
+            heard[1] = r1;
+          const Targets expected = vlayer_mc::compute_targets(c, 2, heard, {v0, v1});
+          for (std::size_t p = 0; p < 3; ++p)
+            CHECK(got[p] == (expected[p] ? *expected[p] : none));
+          std::vector<std::int32_t> again{r0, r1, none, v0, v1};
+          CHECK(memo.targets(again) == got); // remembered, not computed again
+          ++compared;
+        }
+  CHECK(compared > 16);
 }
 
 TEST_CASE("vlayer VN: collect, vn-update at e+d+eps, targets at e+2d+2eps", "[vlayer]") {
