@@ -85,7 +85,7 @@ bool ZeroTimeReduction::step_enabled(std::uint32_t action, const tioa::Params& p
                                      const tioa::State& state) const {
   const tioa::Transition& t = generator_->automaton().transitions()[action];
   for (const auto& binding : t.bindings) {
-    const std::optional<std::int32_t> value = binding.value(state, params);
+    const std::optional<std::int32_t> value = binding.bind(state, params);
     if (!value || *value != params[binding.param])
       return false; // a value the binder rules out
   }
@@ -492,8 +492,7 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
   const std::uint32_t actions = table_.actions();
   s.masks.assign(7 * std::size_t{words}, 0);
   Word* tick_reads = s.masks.data() + 3 * std::size_t{words};
-  if (!trajectory.timed || !trajectory.stop_when ||
-      !trajectory.stop_when(tioa::State(state, 0, tick_reads, words)))
+  if (!trajectory.timed || !trajectory.stops(tioa::State(state, 0, tick_reads, words)))
     return std::nullopt; // time can pass here
 
   // Every enabled step; each action's guard and binder reads traced together.
@@ -552,7 +551,7 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
 
   // The stubborn set.
   add_enablers(
-      state, tick_reads, [&](const tioa::State& t) { return trajectory.stop_when(t); }, s);
+      state, tick_reads, [&](const tioa::State& t) { return trajectory.stops(t); }, s);
   if (invariant_) {
     Word* reads = tick_reads; // done with
     std::fill(reads, reads + words, 0);

@@ -7,19 +7,19 @@
 namespace tioa {
 
 TransitionBuilder& TransitionBuilder::pre(Guard precondition) {
-  automaton_->transition(action_).precondition = std::move(precondition);
+  automaton_->transition(action_).parts.front().guard = std::move(precondition);
   return *this;
 }
 
 TransitionBuilder& TransitionBuilder::eff(Effect effect) {
-  automaton_->transition(action_).effect = std::move(effect);
+  automaton_->transition(action_).parts.front().effect = std::move(effect);
   return *this;
 }
 
 TransitionBuilder& TransitionBuilder::choose(ChoiceCount count, ChoiceEffect effect) {
-  Transition& t = automaton_->transition(action_);
-  t.choices = std::move(count);
-  t.choice_effect = std::move(effect);
+  TransitionPart& part = automaton_->transition(action_).parts.front();
+  part.choices = std::move(count);
+  part.choice_effect = std::move(effect);
   return *this;
 }
 
@@ -28,7 +28,7 @@ TransitionBuilder& TransitionBuilder::choose(std::uint32_t count, ChoiceEffect e
 }
 
 TransitionBuilder& TransitionBuilder::footprint(FootprintFunction footprint) {
-  automaton_->transition(action_).footprint = std::move(footprint);
+  automaton_->transition(action_).parts.front().footprint = std::move(footprint);
   return *this;
 }
 
@@ -45,7 +45,7 @@ TransitionBuilder& TransitionBuilder::bind(const std::string& param, Binder valu
   for (const Binding& b : t.bindings)
     if (b.param == index)
       throw ModelError("parameter '" + param + "' of '" + sig.name + "' is bound twice");
-  t.bindings.push_back({static_cast<std::uint8_t>(index), std::move(value)});
+  t.bindings.push_back({static_cast<std::uint8_t>(index), std::move(value), 0});
   std::sort(t.bindings.begin(), t.bindings.end(),
             [](const Binding& a, const Binding& b) { return a.param < b.param; });
   return *this;
@@ -61,11 +61,7 @@ TransitionBuilder& TransitionBuilder::bind(const std::string& param,
 }
 
 void Automaton::footprint(std::size_t action, const Params& params, Footprint& f) const {
-  const Transition& t = transitions_.at(action);
-  if (t.footprint)
-    t.footprint(params, f);
-  else
-    f.whole(layout_.bits());
+  transitions_.at(action).add_footprint(params, f, layout_.bits());
 }
 
 Automaton::Automaton(std::string name) : name_(std::move(name)) {
@@ -197,7 +193,10 @@ TransitionBuilder Automaton::declare_action(const std::string& name, ActionKind 
   for (const auto& existing : actions_)
     if (existing.name == name)
       throw ModelError("action '" + name + "' is declared twice in " + name_);
-  return TransitionBuilder(*this, add_action(ActionSignature(name, kind, std::move(params)), {}));
+  Transition t;
+  t.input = t.parts.front().input = kind == ActionKind::input;
+  return TransitionBuilder(
+      *this, add_action(ActionSignature(name, kind, std::move(params)), std::move(t)));
 }
 
 TransitionBuilder Automaton::input(const std::string& name, std::vector<ParamRange> params) {
@@ -217,7 +216,8 @@ std::size_t Automaton::add_action(ActionSignature signature, Transition transiti
 }
 
 void Automaton::trajectories(Evolve evolve, StatePredicate stop_when) {
-  trajectories_ = Trajectories{true, std::move(evolve), std::move(stop_when)};
+  trajectories_ =
+      Trajectories{true, {TrajectoryPart{std::move(evolve), std::move(stop_when), 0, {}}}};
 }
 
 const StartSet& Automaton::start() const {

@@ -13,7 +13,6 @@
 // Nondeterminism inside an effect is a `choose(count, effect)`: the effect runs once for
 // each choice 0..count-1, each giving its own successor.
 
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,57 +22,10 @@
 #include "tioa/footprint.hpp"
 #include "tioa/start_set.hpp"
 #include "tioa/state.hpp"
+#include "tioa/transition.hpp"
 #include "tioa/variables.hpp"
 
 namespace tioa {
-
-using Guard = std::function<bool(const State&, const Params&)>;
-using Effect = std::function<void(State&, const Params&)>;
-using ChoiceCount = std::function<std::uint32_t(const State&, const Params&)>;
-using ChoiceEffect = std::function<void(State&, const Params&, std::uint32_t choice)>;
-using Evolve = std::function<void(State&)>;
-
-// A binder gives the only value a parameter can take for the step to be enabled in a
-// state (nullopt: none, e.g. the variable is ⊥): the one-point rule of a guard that says
-// "this parameter equals that state value" (e.g. GPSupdate(l, t)_p with l = loc(p)). The
-// successor generator then tries that value instead of every value of the box. A binder
-// reads the state and the parameters before its own; the guard keeps its own test.
-using Binder = std::function<std::optional<std::int32_t>(const State&, const Params&)>;
-
-struct Binding {
-  std::uint8_t param = 0;
-  Binder value;
-};
-
-// The transition of one action: when it is enabled and what it does.
-struct Transition {
-  Guard precondition;            // empty: always enabled
-  Effect effect;                 // deterministic effect (empty: no change), or
-  ChoiceEffect choice_effect;    // one effect per choice, with
-  ChoiceCount choices;           // the number of choices in this state (empty: 1)
-  FootprintFunction footprint;   // what it may read and write (empty: the whole automaton)
-  std::vector<Binding> bindings; // parameters bound to state values (none: the whole box)
-
-  bool enabled(const State& s, const Params& p) const {
-    return !precondition || precondition(s, p);
-  }
-  std::uint32_t choice_count(const State& s, const Params& p) const {
-    return choices ? choices(s, p) : 1;
-  }
-  void apply(State& s, const Params& p, std::uint32_t choice) const {
-    if (choice_effect)
-      choice_effect(s, p, choice);
-    else if (effect)
-      effect(s, p);
-  }
-};
-
-// Trajectories over discretised time: one tick is one quantum.
-struct Trajectories {
-  bool timed = false;
-  Evolve evolve;            // the state one quantum later (empty: nothing changes)
-  StatePredicate stop_when; // time cannot pass while this holds (empty: never)
-};
 
 class Automaton;
 

@@ -22,7 +22,7 @@ void from(std::size_t i, std::size_t binding, const ActionSignature& sig, const 
   }
   const ParamRange& range = sig.params[i];
   if (binding < t.bindings.size() && t.bindings[binding].param == i) {
-    const std::optional<std::int32_t> value = t.bindings[binding].value(s, p);
+    const std::optional<std::int32_t> value = t.bindings[binding].bind(s, p);
     if (!value || *value < range.lo || *value > range.hi)
       return;
     p.values[i] = *value;

@@ -59,82 +59,26 @@ double box_size(const std::vector<ParamRange>& box) {
   return size;
 }
 
-// Runs the owner's transition and every receiving input, choice by choice (mixed radix).
-Transition synchronised(std::vector<Participant> parts) {
-  auto shared = std::make_shared<const std::vector<Participant>>(std::move(parts));
+// The owner's parts and those of every receiving input, in one flat transition
+// (transition.hpp): each placed where its component's state begins, a receiver filtered
+// by its input's box.
+Transition synchronised(const std::vector<Participant>& parts) {
   Transition t;
-  const Participant& owner = shared->front();
-  if (owner.transition.precondition) {
-    auto guard = owner.transition.precondition;
-    const std::uint32_t base = owner.base;
-    t.precondition = [guard, base](const State& s, const Params& p) {
-      return guard(s.at(base), p);
-    };
+  t.parts.clear();
+  const Participant& owner = parts.front();
+  t.input = owner.signature.kind == ActionKind::input;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const Participant& part = parts[i];
+    std::shared_ptr<const ActionSignature> box;
+    if (i > 0 && part.signature.kind == ActionKind::input)
+      box = std::make_shared<const ActionSignature>(part.signature);
+    const Transition placed = part.transition.placed(part.base, part.bits, box, part.component);
+    for (const TransitionPart& p : placed.parts)
+      if (i == 0 || !p.idle()) // a receiving composite's environment owner does nothing
+        t.parts.push_back(p);
+    if (i == 0)
+      t.bindings = placed.bindings; // the owner's, read in the owner's part of the state
   }
-  auto receives = [](const Participant& part, const Params& p) {
-    return part.signature.kind != ActionKind::input || part.signature.contains(p);
-  };
-  auto deliver = [](const Participant& part, State& s, const Params& p, std::uint32_t choice) {
-    State local = s.at(part.base);
-    if (part.signature.kind == ActionKind::input && !part.transition.enabled(local, p))
-      throw ModelError("input '" + part.signature.label(p) + "' is not enabled in component '" +
-                       part.component + "' (TIOA requires input enabling)");
-    part.transition.apply(local, p, choice);
-  };
-  // The owner's bound parameters, read in the owner's part of the state.
-  for (const Binding& b : owner.transition.bindings)
-    t.bindings.push_back(
-        {b.param, [value = b.value, base = owner.base](const State& s, const Params& p) {
-           return value(s.at(base), p);
-         }});
-  // The step reads and writes what the parts that take part in it do.
-  t.footprint = [shared, receives](const Params& p, Footprint& f) {
-    for (const auto& part : *shared) {
-      if (!receives(part, p))
-        continue;
-      Footprint local = f.at(part.base);
-      if (part.transition.footprint)
-        part.transition.footprint(p, local);
-      else
-        local.whole(part.bits);
-    }
-  };
-  const bool deterministic =
-      std::none_of(shared->begin(), shared->end(), [](const Participant& part) {
-        return static_cast<bool>(part.transition.choices);
-      });
-  if (deterministic) {
-    // The common case: one successor, no choice counts to compute.
-    t.effect = [shared, receives, deliver](State& s, const Params& p) {
-      for (const auto& part : *shared)
-        if (receives(part, p))
-          deliver(part, s, p, 0);
-    };
-    return t;
-  }
-  t.choices = [shared, receives](const State& s, const Params& p) {
-    std::uint32_t count = 1;
-    for (const auto& part : *shared)
-      if (receives(part, p))
-        count *= part.transition.choice_count(s.at(part.base), p);
-    return count;
-  };
-  t.choice_effect = [shared, receives, deliver](State& s, const Params& p, std::uint32_t choice) {
-    // Choice counts are read before any effect runs, so all parts see the pre-state.
-    std::uint32_t counts[max_components + 1];
-    const std::size_t n = shared->size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Participant& part = (*shared)[i];
-      counts[i] = receives(part, p) ? part.transition.choice_count(s.at(part.base), p) : 1;
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      const Participant& part = (*shared)[i];
-      if (!receives(part, p))
-        continue;
-      deliver(part, s, p, choice % counts[i]);
-      choice /= counts[i];
-    }
-  };
   return t;
 }
 
@@ -186,7 +130,7 @@ Automaton compose(const std::string& name, const std::vector<Automaton>& compone
       if (sig.kind == ActionKind::output)
         for (auto& p : inputs_named(sig.name, i))
           parts.push_back(std::move(p));
-      out.add_action(sig, synchronised(std::move(parts)));
+      out.add_action(sig, synchronised(parts));
     }
   }
 
@@ -235,41 +179,22 @@ Automaton compose(const std::string& name, const std::vector<Automaton>& compone
       };
       // The environment drives these: a dummy owner with no effect of its own.
       Participant environment{Transition{}, merged, 0, "environment", 0};
-      environment.signature.kind = ActionKind::internal;
       std::vector<Participant> all{environment};
       all.insert(all.end(), parts.begin(), parts.end());
-      out.add_action(merged, synchronised(std::move(all)));
+      out.add_action(merged, synchronised(all));
     }
 
   // Time passes in the composite when it can pass in every timed component.
-  std::vector<std::pair<Trajectories, std::uint32_t>> timed;
+  Trajectories time;
   for (const auto& p : placed)
-    if (p.automaton->timed())
-      timed.emplace_back(p.automaton->trajectory(), p.base);
-  if (!timed.empty()) {
-    auto parts = std::make_shared<const decltype(timed)>(std::move(timed));
-    out.trajectories(
-        [parts](State& s) {
-          for (const auto& [traj, base] : *parts)
-            if (traj.evolve) {
-              State local = s.at(base);
-              traj.evolve(local);
-            }
-        },
-        [parts](const State& s) {
-          // Time stops while some part stops it: what the parts before it read did not
-          // decide that, so a traced evaluation traces only the part that stops time.
-          const State untraced(s.words(), s.base());
-          for (const auto& [traj, base] : *parts) {
-            if (!traj.stop_when || !traj.stop_when(untraced.at(base)))
-              continue;
-            if (s.trace())
-              (void)traj.stop_when(s.at(base));
-            return true;
-          }
-          return false;
-        });
-  }
+    if (p.automaton->timed()) {
+      Trajectories part = p.automaton->trajectory();
+      part.place(p.base);
+      time.timed = true;
+      time.parts.insert(time.parts.end(), part.parts.begin(), part.parts.end());
+    }
+  if (time.timed)
+    out.set_trajectories(std::move(time));
 
   // Start states: the product of the components' start sets.
   struct Part {

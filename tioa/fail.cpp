@@ -1,6 +1,7 @@
 #include "tioa/fail.hpp"
 
 #include <memory>
+#include <utility>
 
 #include "tioa/errors.hpp"
 
@@ -43,39 +44,14 @@ Automaton Fail(const Automaton& a, FailActions names) {
   }
   const std::uint32_t start_count = static_cast<std::uint32_t>(starts->size() / words);
 
+  // Rules (1) and (2): while failed, every part of A is frozen (transition.hpp): an input
+  // occurs and changes nothing, an output or internal action is disabled; as in A
+  // otherwise.
   for (std::size_t i = 0; i < a.actions().size(); ++i) {
-    const ActionSignature& sig = a.actions()[i];
-    const Transition& original = a.transitions()[i];
-    Transition t;
-    if (sig.kind == ActionKind::input) {
-      // Rules (1) and (2): frozen when failed, as in A otherwise.
-      t.precondition = [original, failed](const State& s, const Params& p) {
-        return s[failed] || original.enabled(s, p);
-      };
-      t.choices = [original, failed](const State& s, const Params& p) {
-        return s[failed] ? 1u : original.choice_count(s, p);
-      };
-    } else {
-      t.precondition = [original, failed](const State& s, const Params& p) {
-        return !s[failed] && original.enabled(s, p);
-      };
-      t.choices = [original](const State& s, const Params& p) {
-        return original.choice_count(s, p);
-      };
-    }
-    t.choice_effect = [original, failed](State& s, const Params& p, std::uint32_t choice) {
-      if (!s[failed])
-        original.apply(s, p, choice);
-    };
-    t.bindings = original.bindings; // inputs have none
-    t.footprint = [original, failed, bits](const Params& p, Footprint& f) {
-      f.reads(failed);
-      if (original.footprint)
-        original.footprint(p, f);
-      else
-        f.whole(bits);
-    };
-    out.add_action(sig, std::move(t));
+    Transition t = a.transitions()[i].placed(0, bits, nullptr, "");
+    for (TransitionPart& part : t.parts)
+      part.frozen_by.push_back(failed.slot);
+    out.add_action(a.actions()[i], std::move(t));
   }
 
   out.input(names.fail) // rule (3)
@@ -96,16 +72,11 @@ Automaton Fail(const Automaton& a, FailActions names) {
                 s[failed] = false;
               });
 
-  if (a.timed()) {
-    const Trajectories original = a.trajectory();
-    out.trajectories(
-        [original, failed](State& s) {
-          if (!s[failed] && original.evolve)
-            original.evolve(s);
-        },
-        [original, failed](const State& s) {
-          return !s[failed] && original.stop_when && original.stop_when(s);
-        });
+  if (a.timed()) { // frozen while failed: time passes and changes nothing
+    Trajectories time = a.trajectory();
+    for (TrajectoryPart& part : time.parts)
+      part.frozen_by.push_back(failed.slot);
+    out.set_trajectories(std::move(time));
   }
 
   // Start: failed = false with a start state of A, or failed = true with anything.

@@ -72,11 +72,10 @@ public:
       });
     }
     const Trajectories& traj = automaton_->trajectory();
-    if (traj.timed && !(traj.stop_when && traj.stop_when(from))) {
+    if (traj.timed && !traj.stops(from)) {
       copy_state(scratch, state);
       State to(scratch, 0);
-      if (traj.evolve)
-        traj.evolve(to);
+      traj.evolve(to);
       emit(static_cast<const Word*>(scratch), StepLabel{});
       ++count;
     }

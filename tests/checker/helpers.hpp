@@ -154,10 +154,9 @@ inline std::set<Words> time_passing_states(const tioa::Automaton& a, bool por) {
       checker::explore(generator, a.start(), checker::ExploreOptions{}, checker::hooks(),
                        reduction ? &*reduction : nullptr);
   std::set<Words> out;
-  const auto& stop_when = a.trajectory().stop_when;
   for (checker::StateId id = 0; id < ex.store.size(); ++id) {
     const Word* s = ex.store.state(id);
-    if (!stop_when || !stop_when(State(s, 0)))
+    if (!a.trajectory().stops(State(s, 0)))
       out.emplace(s, s + a.words());
   }
   return out;

@@ -168,6 +168,66 @@ TEST_CASE("compose: an input that is not enabled when delivered is a ModelError"
              Contains("input enabling") && Contains("deaf"));
 }
 
+TEST_CASE("compose: a composite's transition is flat, one part per author, Fail a flag",
+          "[tioa][compose]") {
+  const Automaton inner = compose("inner", {Fail(receiver("r1", 0, 2)), receiver("r2", 1, 1)});
+  const Automaton sys = compose("sys", {Fail(sender("s", 0, 2)), inner});
+  const std::size_t go = *sys.find_action("go");
+  const Transition& t = sys.transitions()[go];
+  // The sender's guard and effect, and each receiver's effect: no wrapper of a wrapper,
+  // and not inner's environment owner, which does nothing.
+  REQUIRE(t.parts.size() == 3);
+  CHECK(t.parts[0].boxes.empty());
+  CHECK(t.parts[0].frozen_by.size() == 1);
+  CHECK(t.parts[0].frozen_by[0].offset == sys.layout().find("s.failed")->offset);
+  CHECK(t.parts[1].frozen_by.size() == 1);
+  CHECK(t.parts[1].frozen_by[0].offset == sys.layout().find("inner.r1.failed")->offset);
+  CHECK(t.parts[1].boxes.size() == 2); // r1's own box, and inner's input go
+  CHECK(t.parts[2].frozen_by.empty());
+  CHECK(t.parts[2].base == sys.layout().find("inner.r2.got")->offset);
+
+  // go(1) reaches both receivers, go(0) only r1; with r1 failed, r1 keeps its value.
+  Words start = start_states(sys).at(0);
+  const auto one = after(sys, start, "go(1)");
+  const auto zero = after(sys, start, "go(0)");
+  REQUIRE(one.size() == 1);
+  REQUIRE(zero.size() == 1);
+  CHECK(value_of(one[0], variable<int>(sys, "inner.r1.got")) == 1);
+  CHECK(value_of(one[0], variable<int>(sys, "inner.r2.got")) == 1);
+  CHECK(value_of(zero[0], variable<int>(sys, "inner.r1.got")) == 0);
+  CHECK(value_of(zero[0], variable<int>(sys, "inner.r2.got")) == -1);
+  view(start)[variable<bool>(sys, "inner.r1.failed")] = true;
+  const auto frozen = after(sys, start, "go(1)");
+  REQUIRE(frozen.size() == 1);
+  CHECK(value_of(frozen[0], variable<int>(sys, "inner.r1.got")) == -1);
+  CHECK(value_of(frozen[0], variable<int>(sys, "inner.r2.got")) == 1);
+  // A failed sender sends nothing.
+  view(start)[variable<bool>(sys, "s.failed")] = true;
+  CHECK(after(sys, start, "go(1)").empty());
+}
+
+TEST_CASE("compose: an input not enabled deep in a nesting names its own component",
+          "[tioa][compose]") {
+  Automaton picky("picky");
+  picky.boolean("b", false);
+  picky.input("go", {{"i", 0, 2}}).pre([](const State&, const Params& p) { return p[0] != 1; });
+  const Automaton sys = compose("sys", {sender("s", 0, 2), compose("inner", {picky})});
+  CHECK_THAT(model_error([&] { steps(sys, start_states(sys).at(0)); }),
+             Contains("go(1)") && Contains("'picky'"));
+}
+
+TEST_CASE("compose: a failed composition still takes the inputs its environment drives",
+          "[tioa][compose]") {
+  const Automaton failed = Fail(compose("pair", {receiver("r1", 0, 1), receiver("r2", 0, 1)}));
+  Words start = start_states(failed).at(0);
+  view(start)[variable<bool>(failed, "failed")] = true;
+  for (const std::string go : {"go(0)", "go(1)"}) {
+    const auto got = after(failed, start, go);
+    REQUIRE(got.size() == 1); // taken, and nothing changes
+    CHECK(got[0] == start);
+  }
+}
+
 TEST_CASE("compose: the same component twice is incompatible (shared variables)",
           "[tioa][compose]") {
   const Automaton r = receiver("r", 0, 1);
