@@ -30,7 +30,17 @@ struct StepLabel {
 class SuccessorGenerator {
 public:
   explicit SuccessorGenerator(const Automaton& automaton)
-      : automaton_(&automaton), words_(automaton.words()) {}
+      : automaton_(&automaton), words_(automaton.words()) {
+    for (const Transition& t : automaton.transitions()) {
+      const TransitionPart& owner = t.parts.front();
+      Entry e;
+      e.simple =
+          t.parts.size() == 1 && owner.base == 0 && owner.frozen_by.empty() && !owner.choice_effect;
+      e.guard = owner.guard ? &owner.guard : nullptr;
+      e.effect = owner.effect ? &owner.effect : nullptr;
+      table_.push_back(e);
+    }
+  }
 
   std::uint32_t words() const { return words_; }
   bool timed() const { return automaton_->timed(); }
@@ -52,14 +62,25 @@ public:
     StepLabel label;
     for (std::uint32_t a = 0; a < actions.size(); ++a) {
       const Transition& t = transitions[a];
+      const Entry& entry = table_[a];
       label.action = a;
       for_each_candidate(actions[a], t, from, [&](const Params& p) {
-        if (!t.enabled(from, p)) {
+        if (entry.simple ? entry.guard && !(*entry.guard)(from, p) : !t.enabled(from, p)) {
           if (actions[a].kind == ActionKind::input)
             throw_input_not_enabled(actions[a], p);
           return;
         }
         label.params = p;
+        if (entry.simple) { // one author's guard and effect, as most actions are
+          copy_state(scratch, state);
+          State to(scratch, 0);
+          if (entry.effect)
+            (*entry.effect)(to, p);
+          label.choice = 0;
+          emit(static_cast<const Word*>(scratch), static_cast<const StepLabel&>(label));
+          ++count;
+          return;
+        }
         const std::uint32_t choices = t.choice_count(from, p);
         for (std::uint32_t c = 0; c < choices; ++c) {
           copy_state(scratch, state);
@@ -98,8 +119,18 @@ private:
       to[i] = from[i];
   }
 
+  // Each action's transition, read once: when it is one part at the start of the state
+  // that no Fail freezes and that has no choice (most are), its guard and effect are
+  // called directly.
+  struct Entry {
+    bool simple = false;
+    const Guard* guard = nullptr; // null: always enabled
+    const Effect* effect = nullptr;
+  };
+
   const Automaton* automaton_;
   std::uint32_t words_;
+  std::vector<Entry> table_;
 };
 
 } // namespace tioa

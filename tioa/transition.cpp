@@ -4,7 +4,7 @@
 
 namespace tioa {
 
-void Transition::apply(State& s, const Params& p, std::uint32_t choice) const {
+void Transition::apply_parts(State& s, const Params& p, std::uint32_t choice) const {
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const TransitionPart& part = parts[i];
     if ((i > 0 && !part.receives(p)) || part.frozen(s))
@@ -59,7 +59,7 @@ Transition Transition::placed(std::uint32_t base, std::uint32_t bits,
   return out;
 }
 
-void Trajectories::evolve(State& s) const {
+void Trajectories::evolve_parts(State& s) const {
   for (const TrajectoryPart& part : parts)
     if (part.evolve && !any_set(part.frozen_by, s)) {
       State local = s.at(part.base);
@@ -74,7 +74,7 @@ bool Trajectories::can_stop() const {
   return false;
 }
 
-bool Trajectories::stops(const State& s) const {
+bool Trajectories::stops_parts(const State& s) const {
   const State untraced(s.words(), s.base());
   for (const TrajectoryPart& part : parts) {
     if (!part.stop_when || any_set(part.frozen_by, untraced) ||

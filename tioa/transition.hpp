@@ -100,9 +100,11 @@ struct Transition {
 
   bool enabled(const State& s, const Params& p) const {
     const TransitionPart& owner = parts.front();
-    if (owner.frozen(s))
+    if (!owner.frozen_by.empty() && owner.frozen(s))
       return input;
-    return !owner.guard || owner.guard(owner.local(s), p);
+    if (!owner.guard)
+      return true;
+    return owner.base == 0 ? owner.guard(s, p) : owner.guard(s.at(owner.base), p);
   }
   // The product of the choices of the parts that take part (mixed radix, in part order).
   std::uint32_t choice_count(const State& s, const Params& p) const {
@@ -117,7 +119,19 @@ struct Transition {
   // Runs every part that takes part, in order; a receiving input that is not enabled is a
   // ModelError (TIOA are input-enabled). A part's choice count is read before its effect
   // runs, on its own state, which the parts before it do not touch.
-  void apply(State& s, const Params& p, std::uint32_t choice) const;
+  void apply(State& s, const Params& p, std::uint32_t choice) const {
+    const TransitionPart& owner = parts.front();
+    if (parts.size() > 1 || !owner.frozen_by.empty()) {
+      apply_parts(s, p, choice);
+      return;
+    }
+    // One author's transition, as most are: its own effect.
+    State local = owner.local(s);
+    if (owner.choice_effect)
+      owner.choice_effect(local, p, choice);
+    else if (owner.effect)
+      owner.effect(local, p);
+  }
   // Adds to `f` what the step may read and write; `own_bits`: the state size of the
   // automaton that runs it (the footprint of a part that declares none, at the top).
   void add_footprint(const Params& p, Footprint& f, std::uint32_t own_bits) const;
@@ -127,6 +141,9 @@ struct Transition {
   Transition placed(std::uint32_t base, std::uint32_t bits,
                     const std::shared_ptr<const ActionSignature>& box,
                     const std::string& component) const;
+
+private:
+  void apply_parts(State& s, const Params& p, std::uint32_t choice) const;
 };
 
 // One automaton's share of time passing.
@@ -143,14 +160,29 @@ struct Trajectories {
   bool timed = false;
   std::vector<TrajectoryPart> parts;
 
-  void evolve(State& s) const;
+  void evolve(State& s) const {
+    if (parts.size() == 1 && parts.front().frozen_by.empty() && parts.front().base == 0) {
+      if (parts.front().evolve)
+        parts.front().evolve(s);
+      return;
+    }
+    evolve_parts(s);
+  }
   // Whether some part may ever stop time.
   bool can_stop() const;
   // Whether time cannot pass in `s`. Traced (a State with a trace), it traces only the
   // part that stops time: what the parts before it read did not decide that.
-  bool stops(const State& s) const;
+  bool stops(const State& s) const {
+    if (parts.size() == 1 && parts.front().frozen_by.empty() && parts.front().base == 0)
+      return parts.front().stop_when && parts.front().stop_when(s);
+    return stops_parts(s);
+  }
   // Places them where a component's state begins (compose).
   void place(std::uint32_t base);
+
+private:
+  void evolve_parts(State& s) const;
+  bool stops_parts(const State& s) const;
 };
 
 } // namespace tioa
