@@ -1,12 +1,14 @@
 #pragma once
-// Expansion: the workers of a level expand contiguous chunks of the frontier (a range of
-// ids) in parallel and insert the successors into the store themselves, concurrently
+// Expansion: the workers of a level take chunks of the frontier (ranges of ids, in order)
+// until none is left, and insert the successors into the store themselves, concurrently
 // (state_store.hpp); the store grows while they wait at the growth gate
 // (growth_gate.hpp). Each new state keeps the step that found it first (discovery.hpp), so
 // that level_end.hpp can number the level as a sequential search would. On the
 // fingerprint store the frontier's states and the new ones are in level_states.hpp, and the
 // store is asked about fingerprints (insertion.hpp's store_key()).
 
+#include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -69,14 +71,14 @@ inline std::size_t workers_for(std::size_t frontier_size, std::size_t available)
   return frontier_size < parallel_threshold ? 1 : available;
 }
 
-// What one thread produces while expanding its chunk of the frontier; its buffers keep
+// What one thread produces while expanding its chunks of the frontier; its buffers keep
 // their memory from level to level.
 class Worker {
 public:
   explicit Worker(std::uint32_t words)
       : pending_states(words), scratch(words + 1, 0), representative(words + 1, 0) {}
 
-  // The level's results, in the order of the chunk.
+  // The level's results, in frontier order (its chunks are taken in order).
   std::vector<Edge> known_edges; // to states stored before the level (with record_edges)
   std::vector<Edge> new_edges;   // to states of the level being built (with record_edges)
   std::vector<StateId> stuck;    // expanded states with no successor
@@ -99,10 +101,10 @@ public:
   void clear();
 
   // Expands frontier ids [begin, end) of the level; stops early when a limit is met (and
-  // signals it), or on an exception, which it keeps in `error`. The worker on the calling
-  // thread draws the progress line.
+  // signals it), or on an exception, which it keeps in `error`: then it returns false,
+  // and the level stops. The worker on the calling thread draws the progress line.
   template <class Hooks>
-  void expand(const Hooks& hooks, const Level& level, StateId begin, StateId end,
+  bool expand(const Hooks& hooks, const Level& level, StateId begin, StateId end,
               bool calling_thread);
 
   // Room in the level buffers for the `successors` of one state (as edges when
@@ -191,28 +193,25 @@ bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::u
 }
 
 template <class Hooks>
-void Worker::expand(const Hooks& hooks, const Level& level, StateId begin, StateId end,
+bool Worker::expand(const Hooks& hooks, const Level& level, StateId begin, StateId end,
                     bool calling_thread) {
   const std::uint32_t words = level.generator.words();
   const bool record_edges = records_edges(hooks);
-  ids = {0, 0, level.id_block()};
   try {
     for (StateId id = begin; id < end; ++id) {
       if (((id - begin) & 1023) == 1023) {
-        if (calling_thread)
-          level.progress.update(level.store.size(),
-                                (level.end - level.begin) - (id - begin) * level.workers,
-                                level.depth);
+        if (calling_thread) // (chunks are taken in order: roughly what is left)
+          level.progress.update(level.store.size(), level.end - id, level.depth);
         if (level.max_seconds > 0) {
           if (level.signals.out_of_time.load(std::memory_order_relaxed))
-            return;
+            return false;
           if (level.progress.elapsed() > level.max_seconds) {
             level.signals.out_of_time = true;
-            return;
+            return false;
           }
         }
         if (level.signals.out_of_memory.load(std::memory_order_relaxed) || level.gate.stopped())
-          return;
+          return false;
       }
       const Word* state = level.frontier(id);
       if (!expands(hooks, state))
@@ -250,7 +249,7 @@ void Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
       // the memory left.
       if (!make_room(n, record_edges)) {
         level.signals.out_of_memory = true;
-        return;
+        return false;
       }
       ++expanded;
       edge_count += n;
@@ -258,37 +257,56 @@ void Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
         stuck.push_back(id);
       for (std::size_t k = 0; k < n; ++k)
         if (!insert(hooks, level, id, static_cast<std::uint32_t>(k)))
-          return;
+          return false;
     }
   } catch (...) {
     error = std::current_exception();
+    return false;
   }
+  return true;
 }
 
-// Expands a whole level with `workers` (as many as level.workers): the frontier is cut into
-// one contiguous chunk per worker, the first expanded on the calling thread. Each worker
-// may grow its buffers by an equal share of the memory left; the run's peak counts what
-// they reached. The first error of a worker, in worker order, is rethrown.
+// Expands a whole level with `workers` (as many as level.workers): each takes the next
+// chunk of the frontier (in order) until none is left, the first worker on the calling
+// thread, so that a worker whose states are cheap is not left waiting for the others.
+// Each worker's results are in frontier order, and finish_level merges them in that
+// order. Each worker may grow its buffers by an equal share of the memory left; the run's
+// peak counts what they reached. The first error of a worker, in worker order, is
+// rethrown.
 template <class Hooks>
 void expand_level(std::span<Worker> workers, const Hooks& hooks, const Level& level,
                   MemoryBudget& budget) {
   const std::size_t used = workers.size();
-  for (Worker& w : workers)
+  for (Worker& w : workers) {
     w.clear();
+    w.ids = {0, 0, level.id_block()};
+  }
   const std::size_t held = budget.held();
   const std::size_t share = budget.share_left(held, used);
   for (Worker& w : workers)
     w.allowance.begin_level(w.bytes(), share);
-  const std::size_t n = level.end - level.begin;
-  auto chunk = [&](std::size_t t) { return static_cast<StateId>(level.begin + n * t / used); };
+  const std::uint64_t n = level.end - level.begin;
+  const std::uint64_t chunk =
+      used == 1 ? n : std::clamp<std::uint64_t>(n / (used * 64), 256, 16384);
+  std::atomic<std::uint64_t> next{0};
+  auto run = [&](Worker& w, bool calling_thread) {
+    for (;;) {
+      const std::uint64_t at = next.fetch_add(chunk, std::memory_order_relaxed);
+      if (at >= n)
+        break;
+      const auto begin = static_cast<StateId>(level.begin + at);
+      const auto end = static_cast<StateId>(level.begin + std::min(n, at + chunk));
+      if (!w.expand(hooks, level, begin, end, calling_thread)) {
+        next.store(n, std::memory_order_relaxed); // the level stops: nobody takes more
+        break;
+      }
+    }
+    level.gate.leave();
+  };
   std::vector<std::thread> threads;
   for (std::size_t t = 1; t < used; ++t)
-    threads.emplace_back([&, t] {
-      workers[t].expand(hooks, level, chunk(t), chunk(t + 1), false);
-      level.gate.leave();
-    });
-  workers[0].expand(hooks, level, chunk(0), chunk(1), true);
-  level.gate.leave();
+    threads.emplace_back([&, t] { run(workers[t], false); });
+  run(workers[0], true);
   for (auto& thread : threads)
     thread.join();
   std::size_t level_peak = held;

@@ -3,13 +3,14 @@
 // (explorer_impl.hpp), one part per header:
 //   start_insertion.hpp  level 0: the start set, canonicalised, inserted in batches
 //                        through insertion.hpp (the state and memory limits);
-//   expansion.hpp        (parallel) the frontier cut into contiguous chunks, one per
-//                        worker; each generates the successors of its states and inserts
+//   expansion.hpp        (parallel) the frontier cut into chunks that the workers take
+//                        in order; each generates the successors of its states and inserts
 //                        them into the store itself, concurrently, each new state keeping
 //                        the step that found it first (discovery.hpp); the store grows
 //                        while the workers wait at growth_gate.hpp;
-//   level_end.hpp        (one thread) counts, stuck states and edges; the new states
-//                        renumbered in the order of their first steps, their parents;
+//   level_end.hpp        counts, stuck states and edges (the workers' merged in frontier
+//                        order); the new states renumbered in the order of their first
+//                        steps (the store's share on every worker thread), their parents;
 //                        the first target found;
 //   run_limits.hpp       time and memory after each level;
 // with memory_budget.hpp (the memory limit at every growth), state_store.hpp (the visited

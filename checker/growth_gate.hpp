@@ -3,7 +3,7 @@
 // concurrently; when it is out of room, a worker asks for growth and every worker stops
 // at its next checkpoint (before each insertion); the last one to arrive grows the store
 // (or finds the memory limit in the way and stops the level), then all go on. A worker
-// that is done with its chunk leaves, so the others never wait for it.
+// that is done with its chunks leaves, so the others never wait for it.
 
 #include <atomic>
 #include <condition_variable>
@@ -36,7 +36,7 @@ public:
     return !stopped();
   }
 
-  // A worker is done with its chunk (or failed).
+  // A worker is done with its chunks (or failed).
   void leave() {
     std::unique_lock lock(mutex_);
     --active_;

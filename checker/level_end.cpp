@@ -14,6 +14,26 @@ std::size_t renumbering_bytes(std::uint64_t count, std::uint64_t parents, std::u
          count * (2 * sizeof(StateId) + words * sizeof(Word));
 }
 
+// Appends every worker's `list` to `out`, put through `put`, in increasing order of
+// `key`: each worker's list is in frontier order (it took its chunks in order), so the
+// merge is the order one worker would have given.
+template <class T, class Key, class Put>
+void merge_in_frontier_order(std::span<const Worker> workers, std::vector<T> Worker::*list, Key key,
+                             Put put) {
+  std::vector<std::size_t> at(workers.size(), 0);
+  for (;;) {
+    std::size_t best = workers.size();
+    for (std::size_t w = 0; w < workers.size(); ++w)
+      if (at[w] < (workers[w].*list).size() &&
+          (best == workers.size() ||
+           key((workers[w].*list)[at[w]]) < key((workers[best].*list)[at[best]])))
+        best = w;
+    if (best == workers.size())
+      return;
+    put((workers[best].*list)[at[best]++]);
+  }
+}
+
 } // namespace
 
 std::optional<StopReason> finish_level(std::span<const Worker> workers, const Level& level,
@@ -57,27 +77,31 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
     return renumbered.empty() || id < first ? id : renumbered[id - first];
   };
 
+  std::size_t stuck = 0, known = 0, fresh = 0;
   for (const Worker& w : workers) {
-    if (!budget.grow_within(ex.stuck, w.stuck.size()))
-      return StopReason::memory_limit;
-    if (level.states && ex.stuck.empty() && !w.stuck.empty()) { // (the store has no states)
-      const Word* state = level.states->frontier(w.stuck.front());
-      ex.first_stuck_state.assign(state, state + ex.state_words);
-    }
-    ex.stuck.insert(ex.stuck.end(), w.stuck.begin(), w.stuck.end());
+    stuck += w.stuck.size();
+    known += w.known_edges.size();
+    fresh += w.new_edges.size();
+  }
+  if (!budget.grow_within(ex.stuck, stuck))
+    return StopReason::memory_limit;
+  const bool no_stuck_yet = ex.stuck.empty();
+  merge_in_frontier_order(
+      workers, &Worker::stuck, [](StateId id) { return id; },
+      [&](StateId id) { ex.stuck.push_back(id); });
+  if (level.states && no_stuck_yet && !ex.stuck.empty()) { // (the store has no states)
+    const Word* state = level.states->frontier(ex.stuck.front());
+    ex.first_stuck_state.assign(state, state + ex.state_words);
   }
   if (record_edges) {
-    for (const Worker& w : workers) {
-      if (!budget.grow_within(ex.edge_list, w.known_edges.size()))
-        return StopReason::memory_limit;
-      ex.edge_list.insert(ex.edge_list.end(), w.known_edges.begin(), w.known_edges.end());
-    }
-    for (const Worker& w : workers) {
-      if (!budget.grow_within(ex.edge_list, w.new_edges.size()))
-        return StopReason::memory_limit;
-      for (const Edge& e : w.new_edges)
-        ex.edge_list.push_back({e.from, edge_to(new_id(e.target()), e.duration())});
-    }
+    if (!budget.grow_within(ex.edge_list, known + fresh))
+      return StopReason::memory_limit;
+    auto source = [](const Edge& e) { return e.from; };
+    merge_in_frontier_order(workers, &Worker::known_edges, source,
+                            [&](const Edge& e) { ex.edge_list.push_back(e); });
+    merge_in_frontier_order(workers, &Worker::new_edges, source, [&](const Edge& e) {
+      ex.edge_list.push_back({e.from, edge_to(new_id(e.target()), e.duration())});
+    });
   }
 
   std::optional<StateId> found;

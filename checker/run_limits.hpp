@@ -13,7 +13,7 @@
 
 namespace checker {
 
-// Why the workers of a level stopped before the end of their chunks; set from any worker.
+// Why the workers of a level stopped before the end of the frontier; set from any worker.
 struct LevelSignals {
   std::atomic<bool> out_of_time{false};
   std::atomic<bool> out_of_memory{false};

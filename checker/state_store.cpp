@@ -1,5 +1,8 @@
 #include "checker/state_store.hpp"
 
+#include "checker/parallel_for.hpp"
+
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -30,6 +33,7 @@ std::pair<StateId, bool> StateStore::insert(const Word* state, std::uint64_t has
 
 void StateStore::set_inserters(std::uint32_t inserters, std::uint32_t block) {
   slack_ = std::uint64_t{std::max<std::uint32_t>(inserters, 1)} * std::max<std::uint32_t>(block, 1);
+  threads_ = std::max<std::uint32_t>(inserters, 1);
   update_room();
 }
 
@@ -81,29 +85,49 @@ void StateStore::rebuild(std::uint32_t bits, const std::function<bool(StateId)>&
   bits_ = bits;
   mask_ = (std::uint64_t{1} << bits) - 1;
   table_ = MappedArray<std::uint32_t>(mask_ + 1);
-  const std::uint64_t count = size();
-  if (holds) { // some ids are holes: no prefetching ahead, it is rare
-    for (std::uint64_t id = 0; id < count; ++id)
-      if (holds(static_cast<StateId>(id)))
-        place(static_cast<StateId>(id), hash_of(id));
-    return;
-  }
-  std::uint64_t ahead[rebuild_prefetch];
-  for (std::uint64_t id = 0; id < std::min(count, rebuild_prefetch); ++id)
-    prefetch(ahead[id] = hash_of(id));
-  for (std::uint64_t id = 0; id < count; ++id) {
-    const std::uint64_t hash = ahead[id % rebuild_prefetch];
-    if (id + rebuild_prefetch < count)
-      prefetch(ahead[id % rebuild_prefetch] = hash_of(id + rebuild_prefetch));
-    place(static_cast<StateId>(id), hash);
+  const bool concurrent = threads_ > 1;
+  parallel_for(threads_, size(), [&](std::uint64_t begin, std::uint64_t end) {
+    fill(begin, end, holds, concurrent);
+  });
+}
+
+void StateStore::fill(std::uint64_t begin, std::uint64_t end,
+                      const std::function<bool(StateId)>& holds, bool concurrent) {
+  // A ring of the next states to place, their slots prefetched.
+  std::uint64_t ids[rebuild_prefetch], hashes[rebuild_prefetch];
+  std::uint64_t head = 0, queued = 0, next = begin;
+  for (;;) {
+    while (queued < rebuild_prefetch && next < end) {
+      const std::uint64_t id = next++;
+      if (holds && !holds(static_cast<StateId>(id)))
+        continue;
+      const std::uint64_t at = (head + queued++) % rebuild_prefetch;
+      ids[at] = id;
+      prefetch(hashes[at] = hash_of(id));
+    }
+    if (queued == 0)
+      return;
+    place(static_cast<StateId>(ids[head]), hashes[head], concurrent);
+    head = (head + 1) % rebuild_prefetch;
+    --queued;
   }
 }
 
-void StateStore::place(StateId id, std::uint64_t hash) {
-  std::uint64_t at = hash & mask_;
-  while (table_[at] != 0)
-    at = (at + 1) & mask_;
-  table_[at] = static_cast<std::uint32_t>((tag_of(hash) << bits_) | (std::uint64_t{id} + 1));
+void StateStore::place(StateId id, std::uint64_t hash, bool concurrent) {
+  const auto value = static_cast<std::uint32_t>((tag_of(hash) << bits_) | (std::uint64_t{id} + 1));
+  for (std::uint64_t at = hash & mask_;; at = (at + 1) & mask_) {
+    if (!concurrent) {
+      if (table_[at] == 0) {
+        table_[at] = value;
+        return;
+      }
+      continue;
+    }
+    std::uint32_t empty = 0;
+    if (std::atomic_ref<std::uint32_t>(table_[at])
+            .compare_exchange_strong(empty, value, std::memory_order_relaxed))
+      return;
+  }
 }
 
 void StateStore::truncate(std::uint64_t n) {
@@ -126,22 +150,33 @@ void StateStore::reorder(StateId first, std::span<const StateId> order,
   std::vector<std::uint32_t> found;
   if (!slots) {
     found.resize(size() - first);
-    for (StateId id : order)
-      found[id - first] = slot_of(id);
+    parallel_for(threads_, n, [&](std::uint64_t begin, std::uint64_t end) {
+      for (std::uint64_t i = begin; i < end; ++i)
+        found[order[i] - first] = slot_of(order[i]);
+    });
     slots = found.data();
   }
   const auto id_bits = static_cast<std::uint32_t>(mask_);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (i + 8 < n)
-      __builtin_prefetch(table_.data() + slots[order[i + 8] - first]);
-    std::uint32_t& slot = table_[slots[order[i] - first]];
-    slot = (slot & ~id_bits) | static_cast<std::uint32_t>(first + i + 1);
-  }
   Word* level = arena_.data() + std::size_t{first} * words_;
-  const std::vector<Word> before(level, level + (size() - first) * words_);
+  const std::size_t level_words = (size() - first) * words_;
+  const std::unique_ptr<Word[]> before(new Word[level_words]); // (not zeroed: copied over)
+  parallel_for(threads_, n, [&](std::uint64_t begin, std::uint64_t end) {
+    for (std::uint64_t i = begin; i < end; ++i) {
+      if (i + 8 < end)
+        __builtin_prefetch(table_.data() + slots[order[i + 8] - first]);
+      std::uint32_t& slot = table_[slots[order[i] - first]];
+      slot = (slot & ~id_bits) | static_cast<std::uint32_t>(first + i + 1);
+    }
+  });
+  parallel_for(threads_, level_words, [&](std::uint64_t begin, std::uint64_t end) {
+    std::copy(level + begin, level + end, before.get() + begin);
+  });
   count_ = first + n;
-  for (std::size_t i = 0; i < n; ++i)
-    std::copy_n(before.data() + std::size_t{order[i] - first} * words_, words_, level + i * words_);
+  parallel_for(threads_, n, [&](std::uint64_t begin, std::uint64_t end) {
+    for (std::uint64_t i = begin; i < end; ++i)
+      std::copy_n(before.get() + std::size_t{order[i] - first} * words_, words_,
+                  level + i * words_);
+  });
 }
 
 } // namespace checker

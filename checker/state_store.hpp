@@ -126,6 +126,7 @@ public:
 
   // The room find_or_insert leaves for the threads that may pass its check at once (a
   // block each): at least as many threads as insert concurrently, and their block size.
+  // As many threads refill the table when it grows and renumber a level.
   void set_inserters(std::uint32_t inserters, std::uint32_t block = 1);
   // Room for `more` states beyond size() (and for the inserters' slack): a bigger table,
   // a longer arena. While no thread uses the store. The bytes it would add first:
@@ -190,8 +191,12 @@ private:
   std::uint64_t hash_of(std::uint64_t id) const {
     return hash_state(state(static_cast<StateId>(id)), words_);
   }
-  // Puts `id` in the table (while nobody else uses it).
-  void place(StateId id, std::uint64_t hash);
+  // Puts the states of ids [begin, end) (those `holds`, all when empty) in the table;
+  // `concurrent`: other threads fill other ranges at once.
+  void fill(std::uint64_t begin, std::uint64_t end, const std::function<bool(StateId)>& holds,
+            bool concurrent);
+  // Puts `id` in the table (no lookup uses it meanwhile).
+  void place(StateId id, std::uint64_t hash, bool concurrent);
 
   std::uint32_t words_;
   std::uint32_t bits_ = 0; // m: 2^m slots
@@ -203,6 +208,7 @@ private:
   std::uint64_t room_ = 0; // find_or_insert inserts while size() < room_
   std::uint64_t tables_built_ = 0;
   std::uint64_t slack_ = 1;        // inserters
+  std::uint32_t threads_ = 1;      // that refill the table and renumber a level together
   std::uint64_t arena_states_ = 0; // capacity counted as held, in states
   std::size_t arena_bytes_ = 0;    // = arena_states_ * words * 8
   MappedArray<Word> arena_;
