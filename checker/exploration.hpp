@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "checker/mapped_memory.hpp"
@@ -49,7 +50,12 @@ struct Exploration {
   StopReason stop = StopReason::finished;
   std::optional<StateId> found; // the first target state
   std::vector<StateId> stuck;   // expanded states with no successor at all
-  std::vector<Edge> edge_list;  // when record_edges
+  // The edges, when record_edges, in one compact form: the steps of the expanded state v
+  // are edge_targets[edge_offsets[v] .. edge_offsets[v + 1]) (edge_to(): the target and
+  // a timed bit), in the order the search took them. States not expanded (past
+  // edge_offsets.size() - 1) have none.
+  std::vector<std::uint64_t> edge_offsets{0};
+  std::vector<std::uint32_t> edge_targets;
   double seconds = 0;
   unsigned threads = 1;
   bool reduction = false;           // zero-time steps reduced (zero_time_reduction.hpp)
@@ -68,7 +74,14 @@ struct Exploration {
   bool complete() const { return stop == StopReason::finished || stop == StopReason::found; }
   std::size_t memory_bytes() const {
     return store.memory_bytes() + parent.capacity() * sizeof(StateId) +
-           stuck.capacity() * sizeof(StateId) + edge_list.capacity() * sizeof(Edge);
+           stuck.capacity() * sizeof(StateId) + edge_offsets.capacity() * sizeof(std::uint64_t) +
+           edge_targets.capacity() * sizeof(std::uint32_t);
+  }
+  // The steps recorded from `v` (edge_to() form).
+  std::span<const std::uint32_t> steps_from(StateId v) const {
+    if (std::size_t{v} + 1 >= edge_offsets.size())
+      return {};
+    return {edge_targets.data() + edge_offsets[v], edge_targets.data() + edge_offsets[v + 1]};
   }
 };
 

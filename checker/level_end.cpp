@@ -94,14 +94,25 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
     ex.first_stuck_state.assign(state, state + ex.state_words);
   }
   if (record_edges) {
-    if (!budget.grow_within(ex.edge_list, known + fresh))
+    // Each frontier state's steps: to states stored before the level first, then to new
+    // ones, as a sequential search records them; one worker has each state's.
+    if (!budget.grow_within(ex.edge_targets, known + fresh) ||
+        !budget.grow_within(ex.edge_offsets, level.end - level.begin))
       return StopReason::memory_limit;
-    auto source = [](const Edge& e) { return e.from; };
-    merge_in_frontier_order(workers, &Worker::known_edges, source,
-                            [&](const Edge& e) { ex.edge_list.push_back(e); });
-    merge_in_frontier_order(workers, &Worker::new_edges, source, [&](const Edge& e) {
-      ex.edge_list.push_back({e.from, edge_to(new_id(e.target()), e.duration())});
-    });
+    std::vector<std::size_t> at_known(workers.size(), 0), at_new(workers.size(), 0);
+    for (StateId v = level.begin; v < level.end; ++v) {
+      for (std::size_t w = 0; w < workers.size(); ++w) {
+        const auto& edges = workers[w].known_edges;
+        for (std::size_t& i = at_known[w]; i < edges.size() && edges[i].from == v; ++i)
+          ex.edge_targets.push_back(edges[i].to);
+      }
+      for (std::size_t w = 0; w < workers.size(); ++w) {
+        const auto& edges = workers[w].new_edges;
+        for (std::size_t& i = at_new[w]; i < edges.size() && edges[i].from == v; ++i)
+          ex.edge_targets.push_back(edge_to(new_id(edges[i].target()), edges[i].duration()));
+      }
+      ex.edge_offsets.push_back(ex.edge_targets.size());
+    }
   }
 
   std::optional<StateId> found;
@@ -113,10 +124,18 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
     // A sequential search stops at the target: what it would not have inserted goes.
     ex.store.truncate(std::uint64_t{*found} + 1);
     ex.parent.truncate(std::uint64_t{*found} + 1);
-    if (record_edges)
-      ex.edge_list.erase(std::remove_if(ex.edge_list.begin(), ex.edge_list.end(),
-                                        [&](const Edge& e) { return e.target() > *found; }),
-                         ex.edge_list.end());
+    if (record_edges) { // the steps to states forgotten go too
+      std::uint64_t kept = 0, begin = 0;
+      for (std::size_t v = 0; v + 1 < ex.edge_offsets.size(); ++v) {
+        const std::uint64_t end = ex.edge_offsets[v + 1];
+        for (std::uint64_t i = begin; i < end; ++i)
+          if ((ex.edge_targets[i] & ~Edge::timed_bit) <= *found)
+            ex.edge_targets[kept++] = ex.edge_targets[i];
+        begin = end;
+        ex.edge_offsets[v + 1] = kept;
+      }
+      ex.edge_targets.resize(kept);
+    }
     ex.found = found;
     if (level.states)
       ex.found_state.assign(level.states->built(*found),

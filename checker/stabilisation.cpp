@@ -74,13 +74,13 @@ struct Graph {
   }
 };
 
-Graph build_graph(const Exploration& ex, const StatePredicate& legal, const StatePredicate& settled,
+// The graph takes the exploration's edges over (Exploration::edge_offsets and
+// edge_targets): they are kept once.
+Graph build_graph(Exploration& ex, const StatePredicate& legal, const StatePredicate& settled,
                   Meter& meter) {
   const std::size_t n = ex.store.size();
-  const std::size_t edges = ex.edge_list.size();
-  // legal, settled, offsets, targets, and fill while the graph is built.
-  meter.take(2 * n + (n + 1) * sizeof(std::uint64_t) + edges * sizeof(std::uint32_t) +
-             n * sizeof(std::uint64_t));
+  // legal, settled, and offsets for states never expanded.
+  meter.take(2 * n + (n + 1 - std::min(n + 1, ex.edge_offsets.size())) * sizeof(std::uint64_t));
   Graph g;
   g.legal.resize(n);
   g.settled.resize(n);
@@ -89,16 +89,9 @@ Graph build_graph(const Exploration& ex, const StatePredicate& legal, const Stat
     g.settled[v] = settled && settled(state) ? 1 : 0;
     g.legal[v] = g.settled[v] || legal(state) ? 1 : 0;
   }
-  g.offsets.assign(n + 1, 0);
-  for (const Edge& e : ex.edge_list)
-    ++g.offsets[e.from + 1];
-  for (std::size_t v = 0; v < n; ++v)
-    g.offsets[v + 1] += g.offsets[v];
-  g.targets.resize(ex.edge_list.size());
-  std::vector<std::uint64_t> fill(g.offsets.begin(), g.offsets.end() - 1);
-  for (const Edge& e : ex.edge_list)
-    g.targets[fill[e.from]++] = e.to;
-  meter.release(n * sizeof(std::uint64_t));
+  g.offsets = std::move(ex.edge_offsets);
+  g.targets = std::move(ex.edge_targets);
+  g.offsets.resize(n + 1, g.offsets.back());
   return g;
 }
 
@@ -347,7 +340,7 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
   hooks.record_edges = true;
   if (settled)
     hooks.expand = [&](const tioa::Word* s) { return !settled(tioa::State(s, 0)); };
-  const Exploration ex = explore(gen, system.start(), options, hooks);
+  Exploration ex = explore(gen, system.start(), options, hooks);
 
   PropertyResult r = result_of("stabilisation", ex, gen);
   if (!ex.complete()) {
@@ -364,7 +357,7 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
   } catch (const OverMemoryLimit&) {
     r.verdict = Verdict::incomplete;
     r.message = "memory limit reached after the exploration (" + std::to_string(ex.store.size()) +
-                " states, " + std::to_string(ex.edge_list.size()) +
+                " states, " + std::to_string(ex.edges) +
                 " edges): the graph of its components does not fit; no execution checked";
     return r;
   }
@@ -386,8 +379,11 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
         std::to_string(c.legal_locks) + " reachable states in L from which " +
         (gen.timed() ? "time can never pass again (time-lock)" : "no step is possible (deadlock)"));
   std::uint64_t escapes = 0;
-  for (const Edge& e : ex.edge_list)
-    escapes += (g.legal[e.from] && !g.legal[e.target()]) ? 1 : 0;
+  for (StateId v = 0; v < ex.store.size(); ++v) {
+    const auto [begin, end] = g.out(v);
+    for (auto t = begin; t != end; ++t)
+      escapes += (g.legal[v] && !g.legal[*t & ~Edge::timed_bit]) ? 1 : 0;
+  }
   if (escapes > 0)
     r.notes.push_back("L is not closed: " + std::to_string(escapes) +
                       " reachable steps leave it; times count to the last state outside L");

@@ -29,8 +29,11 @@ ExploreOptions with_threads(unsigned threads) {
 
 std::vector<std::tuple<StateId, StateId, std::uint32_t>> edges_of(const Exploration& ex) {
   std::vector<std::tuple<StateId, StateId, std::uint32_t>> out;
-  for (const Edge& e : ex.edge_list)
-    out.emplace_back(e.from, e.target(), e.duration());
+  for (StateId v = 0; v < ex.store.size(); ++v)
+    for (const std::uint32_t to : ex.steps_from(v)) {
+      const Edge e{v, to};
+      out.emplace_back(e.from, e.target(), e.duration());
+    }
   return out;
 }
 
@@ -57,7 +60,7 @@ void require_same_counts(const Exploration& a, const Exploration& b) {
                      [](const auto& x, const auto& y) { return std::get<0>(x) < std::get<0>(y); });
     return e;
   };
-  CHECK(a.edge_list.size() == b.edge_list.size());
+  CHECK(a.edge_targets.size() == b.edge_targets.size());
   const bool same_edges = sorted_by_source(edges_of(a)) == sorted_by_source(edges_of(b));
   CHECK(same_edges);
 }
