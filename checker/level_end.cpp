@@ -14,9 +14,9 @@ std::size_t renumbering_bytes(std::uint64_t count, std::uint64_t parents, std::u
          count * (2 * sizeof(StateId) + words * sizeof(Word));
 }
 
-// Appends every worker's `list` to `out`, put through `put`, in increasing order of
-// `key`: each worker's list is in frontier order (it took its chunks in order), so the
-// merge is the order one worker would have given.
+// Hands every item of every worker's `list` to `put`, in increasing order of `key`: each
+// worker's list is in frontier order (it took its chunks in order), so the merge is the
+// order one worker would have given.
 template <class T, class Key, class Put>
 void merge_in_frontier_order(std::span<const Worker> workers, std::vector<T> Worker::*list, Key key,
                              Put put) {
