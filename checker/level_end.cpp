@@ -14,26 +14,6 @@ std::size_t renumbering_bytes(std::uint64_t count, std::uint64_t parents, std::u
          count * (2 * sizeof(StateId) + words * sizeof(Word));
 }
 
-// Hands every item of every worker's `list` to `put`, in increasing order of `key`: each
-// worker's list is in frontier order (it took its chunks in order), so the merge is the
-// order one worker would have given.
-template <class T, class Key, class Put>
-void merge_in_frontier_order(std::span<const Worker> workers, std::vector<T> Worker::*list, Key key,
-                             Put put) {
-  std::vector<std::size_t> at(workers.size(), 0);
-  for (;;) {
-    std::size_t best = workers.size();
-    for (std::size_t w = 0; w < workers.size(); ++w)
-      if (at[w] < (workers[w].*list).size() &&
-          (best == workers.size() ||
-           key((workers[w].*list)[at[w]]) < key((workers[best].*list)[at[best]])))
-        best = w;
-    if (best == workers.size())
-      return;
-    put((workers[best].*list)[at[best]++]);
-  }
-}
-
 } // namespace
 
 std::optional<StopReason> finish_level(std::span<const Worker> workers, const Level& level,
@@ -85,11 +65,12 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
   }
   if (!budget.grow_within(ex.stuck, stuck))
     return StopReason::memory_limit;
-  const bool no_stuck_yet = ex.stuck.empty();
-  merge_in_frontier_order(
-      workers, &Worker::stuck, [](StateId id) { return id; },
-      [&](StateId id) { ex.stuck.push_back(id); });
-  if (level.states && no_stuck_yet && !ex.stuck.empty()) { // (the store has no states)
+  // In frontier order, as one worker would have found them (each took chunks in order).
+  const std::size_t before = ex.stuck.size();
+  for (const Worker& w : workers)
+    ex.stuck.insert(ex.stuck.end(), w.stuck.begin(), w.stuck.end());
+  std::sort(ex.stuck.begin() + static_cast<std::ptrdiff_t>(before), ex.stuck.end());
+  if (level.states && before == 0 && !ex.stuck.empty()) { // (the store has no states)
     const Word* state = level.states->frontier(ex.stuck.front());
     ex.first_stuck_state.assign(state, state + ex.state_words);
   }
