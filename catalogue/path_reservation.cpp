@@ -98,6 +98,11 @@ ModelDefinition path_reservation_definition() {
   ModelDefinition d;
   d.name = "path-reservation";
   d.description = "the path reservation protocol of seed 004 on small scenarios (time: steps)";
+  ParamSpec variant = ParamSpec::choice(
+      "variant", "paper", {"paper", "release-before-reserve"},
+      "the protocol as written, or a broken one that releases before it reserves (shows the "
+      "safety checks failing)");
+  variant.variant = true;
   d.params = {
       ParamSpec::choice("scenario", "crossing", path_reservation::scenario_names(),
                         "the robots and their paths (models/path_reservation/README.md)"),
@@ -107,9 +112,7 @@ ModelDefinition path_reservation_definition() {
       ParamSpec::choice("sort", "distance", {"distance", "id"},
                         "SortSC of the Conflict resolver: distance to the shared cells then "
                         "id, or id alone"),
-      ParamSpec::choice("variant", "paper", {"paper", "release-before-reserve"},
-                        "the protocol as written, or a broken one that releases before it "
-                        "reserves (shows the safety checks failing)"),
+      variant,
       ParamSpec::choice("msg_rule", "discover-zone", {"discover-zone", "any-zone"},
                         "which request of R_j is msg_j: one for the zone R_j named in its "
                         "Discover reply, or any (README, findings P1/P2)"),

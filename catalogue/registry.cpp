@@ -39,6 +39,17 @@ ParamSpec ParamSpec::choice(std::string name, std::string default_choice,
   return spec;
 }
 
+ParamSpec ParamSpec::change(std::string name, std::string description) {
+  ParamSpec spec;
+  spec.name = std::move(name);
+  spec.default_value = 0;
+  spec.lo = 0;
+  spec.hi = 1;
+  spec.description = std::move(description);
+  spec.variant = true;
+  return spec;
+}
+
 ParamSpec ParamSpec::text(std::string name, std::string default_text, std::string description) {
   ParamSpec spec;
   spec.name = std::move(name);
@@ -78,6 +89,19 @@ const ModelDefinition& Catalogue::find(const std::string& name) const {
   for (const auto& m : models_)
     known += (known.empty() ? "" : ", ") + m.name;
   throw UsageError("unknown model '" + name + "' (known: " + known + ")");
+}
+
+std::string variant_name(const ModelDefinition& model, const ParamValues& values) {
+  if (std::none_of(model.params.begin(), model.params.end(),
+                   [](const ParamSpec& p) { return p.variant; }))
+    return "";
+  std::string changes;
+  for (const auto& p : model.params) {
+    const auto value = values.find(p.name);
+    if (p.variant && value != values.end() && value->second != p.default_value)
+      changes += (changes.empty() ? "" : ",") + p.name + "=" + value->second.text();
+  }
+  return changes.empty() ? "paper" : changes;
 }
 
 ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::string>& settings) {

@@ -37,10 +37,16 @@ struct ParamSpec {
   bool lo_open = false;
   bool hi_open = false;
   std::vector<std::string> choices = {}; // ParamKind::choice: the names, in the order listed
+  // A change to the paper's algorithm, made for a lemma to hold or to repair what a check
+  // found: its default is the paper's version, and a run with another value names it in
+  // every report (variant_name).
+  bool variant = false;
 
   // A choice parameter; default_choice must be one of the choices.
   static ParamSpec choice(std::string name, std::string default_choice,
                           std::vector<std::string> choices, std::string description);
+  // A variant switched on by 1: 0 (the default) is the paper's algorithm.
+  static ParamSpec change(std::string name, std::string description);
   // A text parameter: any text is a value (the model checks it when it builds).
   static ParamSpec text(std::string name, std::string default_text, std::string description);
 
@@ -110,6 +116,11 @@ private:
 
 // Defaults overridden by "name=value" settings; every value parsed and range-checked.
 ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::string>& settings);
+
+// Which version of the algorithm `values` build: "paper" when every variant parameter has
+// its default, else the variant settings that differ from it ("cn_repair=1,vn_repair=1");
+// "" for a model that declares no variant parameter.
+std::string variant_name(const ModelDefinition& model, const ParamValues& values);
 
 // The settings in command-line arguments of the form "name=value,name=value". A piece
 // without '=' continues the value before it, so that a text (a file name) may hold commas:

@@ -74,6 +74,11 @@ PropertyResult check_legal_set(const Automaton& system, const StatePredicate& le
     r.message =
         "closed: every step from each of its " + std::to_string(r.states) + " states stays in it";
   }
+  // Every member of L is enumerated, so the closure covers all of them (how many is known
+  // when the enumeration finished).
+  r.coverage = {Starts::all, r.states, std::nullopt, "the legal set"};
+  if (!bad_from && limit.empty())
+    r.coverage.of = r.states;
   return r;
 }
 

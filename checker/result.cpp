@@ -19,6 +19,40 @@ const char* to_string(Verdict verdict) {
   }
 }
 
+const char* to_string(Starts starts) {
+  switch (starts) {
+  case Starts::all:
+    return "all";
+  case Starts::sampled:
+    return "sampled";
+  default:
+    return "one";
+  }
+}
+
+std::string describe(const Coverage& c) {
+  return std::string(to_string(c.starts)) + ", " + std::to_string(c.count) +
+         (c.of ? " of " + std::to_string(*c.of) : std::string()) +
+         (c.over.empty() ? std::string() : ": " + c.over) +
+         (c.chosen.empty() ? std::string() : " (" + c.chosen + ")");
+}
+
+void claim_only_covered(PropertyResult& result) {
+  const Coverage& c = result.coverage;
+  if (result.verdict != Verdict::holds || c.starts == Starts::all)
+    return;
+  result.verdict = Verdict::incomplete;
+  const std::string over = c.over.empty() ? "the start states" : c.over;
+  const std::string chosen = c.chosen.empty() ? "" : " (" + c.chosen + ")";
+  if (c.starts == Starts::one)
+    result.message =
+        "holds from one start state" + chosen + ", not from all of " + over + ": " + result.message;
+  else
+    result.message = "holds on " + std::to_string(c.count) +
+                     (c.of ? " of " + std::to_string(*c.of) : std::string()) + chosen +
+                     ", not on all of " + over + ": " + result.message;
+}
+
 PropertyResult result_of(const std::string& kind, const Exploration& ex,
                          const tioa::SuccessorGenerator& generator) {
   PropertyResult r;
@@ -34,6 +68,9 @@ PropertyResult result_of(const std::string& kind, const Exploration& ex,
   if (ex.fingerprints())
     r.omission_probability = omission_probability(ex.store.size());
   r.time_unit = generator.timed() ? "quanta" : "steps";
+  // An exploration covers every state reachable from its start set; a check that explores
+  // from a part of what its statement quantifies over says so itself.
+  r.coverage = {Starts::all, ex.start_states, ex.start_states, "the start states"};
   return r;
 }
 

@@ -2,6 +2,7 @@
 // The outcome of one property check: a verdict, the figures the run measured, and a
 // trace (a counterexample, or a witness of the worst case).
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -14,6 +15,22 @@ namespace checker {
 enum class Verdict { holds, violated, incomplete };
 
 const char* to_string(Verdict verdict);
+
+// How the start states a property's statement quantifies over were chosen: every one of
+// them, a part of them (a seeded draw, a family built by a rule), or a single one.
+enum class Starts { all, sampled, one };
+
+const char* to_string(Starts starts); // "all", "sampled", "one"
+
+// What a run covered of what its statement quantifies over (issue 15). A verdict of holds
+// claims exactly this: run_property() turns holds into incomplete unless starts is all.
+struct Coverage {
+  Starts starts = Starts::all;
+  std::uint64_t count = 0;         // start states (or pairs, or instances) covered
+  std::optional<std::uint64_t> of; // out of how many, when known
+  std::string over;                // what the statement quantifies over, in words
+  std::string chosen;              // how the covered ones were chosen, when not all
+};
 
 struct PropertyResult {
   std::string name;
@@ -32,6 +49,8 @@ struct PropertyResult {
   std::string store = "exact";      // how the visited states were held: "exact" or "fingerprint"
   // The fingerprint store only: the probability that a state was missed (fingerprint.hpp).
   std::optional<double> omission_probability;
+
+  Coverage coverage;
 
   std::string time_unit; // "steps" or "quanta"
   std::optional<std::uint64_t> worst_time;
@@ -53,6 +72,14 @@ PropertyResult result_of(const std::string& kind, const Exploration& ex,
 // "N reachable states", or, when zero-time steps were reduced, "the N reachable states of
 // the reduced graph": a reduced search visits only some of the reachable states.
 std::string reachable_states(std::uint64_t count, const Exploration& ex);
+
+// "all, 4 of 4: the start states", "sampled, 1000 of 5120000: U(VLNodes) x R(env) (drawn
+// at random, seed 1)".
+std::string describe(const Coverage& coverage);
+
+// A run that covered less than its statement asks (coverage.starts is not all) does not
+// hold: its holds becomes incomplete, the message saying on how many start states it held.
+void claim_only_covered(PropertyResult& result);
 
 // Sets verdict and message for a run that stopped on a limit.
 void mark_incomplete(PropertyResult& result, const Exploration& ex, const std::string& covered);

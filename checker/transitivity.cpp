@@ -23,6 +23,7 @@ PropertyResult check_transitivity(const Automaton& system, const StatePredicate&
   r.edges = first.edges + second.edges + direct.edges;
   r.seconds = first.seconds + second.seconds + direct.seconds;
   r.threads = direct.threads;
+  r.coverage = direct.coverage;
   auto time_of = [](const PropertyResult& p) {
     return p.worst_time ? std::to_string(*p.worst_time) : std::string(to_string(p.verdict));
   };

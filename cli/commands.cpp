@@ -31,6 +31,7 @@ ModelRun start_run(const Built& built, const tioa::Automaton& system) {
   ModelRun run;
   run.model = built.definition->name;
   run.params = ordered_params(*built.definition, built.values);
+  run.variant = catalogue::variant_name(*built.definition, built.values);
   run.quantum = built.instance.quantum;
   run.layout = system.layout();
   return run;

@@ -26,7 +26,8 @@ Json list_json(const catalogue::Catalogue& catalogue) {
                  {"lo", number ? param_json(p.lo) : Json()}, // null: no bounds
                  {"hi", number ? param_json(p.hi) : Json()},
                  {"range", p.range()},
-                 {"description", p.description}};
+                 {"description", p.description},
+                 {"variant", p.variant}}; // a change to the paper's algorithm
       if (choice)
         param["choices"] = p.choices;
       params.push_back(std::move(param));
@@ -63,8 +64,21 @@ void print_list_text(const catalogue::Catalogue& catalogue) {
       default_width = std::max(default_width, default_value(p).size());
       range_width = std::max(range_width, range(p).size());
     }
+    // The variants last, under their own heading: their defaults are the paper's.
+    std::vector<const catalogue::ParamSpec*> ordered;
+    for (const bool variant : {false, true})
+      for (const auto& p : def.params)
+        if (p.variant == variant)
+          ordered.push_back(&p);
     std::cout << "  parameters:\n";
-    for (const auto& p : def.params) {
+    bool variants_shown = false;
+    for (const catalogue::ParamSpec* spec : ordered) {
+      const catalogue::ParamSpec& p = *spec;
+      if (p.variant && !variants_shown) {
+        std::cout << "  variants (changes to the paper's algorithm; the defaults are the "
+                     "paper's):\n";
+        variants_shown = true;
+      }
       std::cout << fmt::format("    {:<{}}  default {:<{}}  range {:<{}}  {}\n", p.name, name_width,
                                default_value(p), default_width, range(p), range_width,
                                p.description);

@@ -20,6 +20,9 @@ using OrderedParams = std::vector<std::pair<std::string, catalogue::ParamValue>>
 struct ModelRun {
   std::string model;
   OrderedParams params;
+  // "paper", or the variant parameters set away from the paper's algorithm; "" when the
+  // model declares no variant (catalogue::variant_name).
+  std::string variant;
   std::string quantum; // what one tick is; empty when the model is untimed
   std::string from;    // explore: "arbitrary" or "start"; empty otherwise
   tioa::StateLayout layout;

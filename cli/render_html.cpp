@@ -4,6 +4,7 @@
 
 #include "cli/html_text.hpp"
 #include "cli/render_table.hpp"
+#include "cli/report_text.hpp"
 
 namespace cli {
 
@@ -149,6 +150,8 @@ void write_html(std::ostream& out, const Json& report, const catalogue::Picture&
       << "</style>\n</head>\n<body>\n";
   out << "<h1>tioa-check: <code>" << html_text(model) << "</code></h1>\n";
   out << "<p>parameters: <code>" << html_text(params) << "</code>";
+  if (report.contains("variant") && report["variant"].is_string())
+    out << "; variant: " << html_text(variant_text(scalar_text(report["variant"])));
   if (report.contains("from"))
     out << "; start states: " << html_text(scalar_text(report["from"]));
   if (report.contains("quantum"))
@@ -159,7 +162,19 @@ void write_html(std::ostream& out, const Json& report, const catalogue::Picture&
     out << "<li><b>" << html_text(scalar_text(property["name"])) << "</b> ("
         << html_text(scalar_text(property["kind"])) << "): <span class=\"verdict-"
         << html_text(verdict) << "\">" << html_text(verdict)
-        << "</span>: " << html_text(scalar_text(property["message"])) << "</li>\n";
+        << "</span>: " << html_text(scalar_text(property["message"]));
+    if (property.contains("coverage")) {
+      const Json& coverage = property["coverage"];
+      out << " <i>(covered: " << html_text(scalar_text(coverage["starts"])) << ", "
+          << html_text(scalar_text(coverage["count"]));
+      if (!coverage["of"].is_null())
+        out << " of " << html_text(scalar_text(coverage["of"]));
+      out << ": " << html_text(scalar_text(coverage["over"]));
+      if (coverage.contains("chosen") && !coverage["chosen"].get<std::string>().empty())
+        out << ", " << html_text(scalar_text(coverage["chosen"]));
+      out << ")</i>";
+    }
+    out << "</li>\n";
   }
   out << "</ul>\n";
   bool any_trace = false;

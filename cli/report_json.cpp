@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "checker/trace.hpp"
+#include "cli/report_text.hpp"
 #include "cli/time_note.hpp"
 
 namespace cli {
@@ -85,6 +86,14 @@ Json property_json(const ModelRun& run, const checker::PropertyResult& r, bool w
   out["store"] = r.store;
   if (r.omission_probability)
     out["omission_probability"] = *r.omission_probability;
+  Json coverage;
+  coverage["starts"] = checker::to_string(r.coverage.starts);
+  coverage["count"] = r.coverage.count;
+  coverage["of"] = r.coverage.of ? Json(*r.coverage.of) : Json(nullptr);
+  coverage["over"] = r.coverage.over;
+  coverage["chosen"] = r.coverage.chosen;
+  coverage["instance"] = run.model + (run.params.empty() ? "" : " " + format_params(run.params));
+  out["coverage"] = std::move(coverage);
   out["time_unit"] = r.time_unit;
   const bool timing_kind = r.kind == "stabilisation" || r.kind == "transitivity";
   if (timing_kind && r.worst_time)
@@ -122,6 +131,7 @@ Json run_json(const ModelRun& run, bool with_trace) {
   Json out;
   out["model"] = run.model;
   out["params"] = params_json(run.params);
+  out["variant"] = run.variant.empty() ? Json(nullptr) : Json(run.variant);
   if (!run.from.empty())
     out["from"] = run.from;
   if (!run.quantum.empty())

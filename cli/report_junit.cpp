@@ -74,6 +74,8 @@ JunitSuite junit_suite(const ModelRun& run, TraceMode trace) {
   suite.name = run.model;
   for (const auto& [name, value] : run.params)
     suite.properties.emplace_back("param." + name, value.text());
+  if (!run.variant.empty())
+    suite.properties.emplace_back("variant", run.variant);
   if (!run.from.empty())
     suite.properties.emplace_back("from", run.from);
   for (const auto& r : run.results) {

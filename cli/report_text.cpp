@@ -54,6 +54,11 @@ std::string format_params(const OrderedParams& params) {
   return text;
 }
 
+std::string variant_text(const std::string& variant) {
+  return variant == "paper" ? "paper (the algorithm as the paper gives it)"
+                            : variant + " (changed from the paper's algorithm)";
+}
+
 std::string format_value(const catalogue::ParamValue& value) {
   return value.is_text() && value.text().empty() ? "\"\"" : value.text();
 }
@@ -105,6 +110,7 @@ void print_property_block(std::ostream& out, const ModelRun& run, const checker:
   out << "   " << r.message << '\n';
   out << fmt::format("   states {}  edges {}  depth {}  seconds {:.3f}  threads {}\n", r.states,
                      r.edges, r.depth, r.seconds, r.threads);
+  out << "   coverage: " << checker::describe(r.coverage) << '\n';
   if (r.por && r.reduced_states > 0) // with none, the graph explored is the full one
     out << "   zero-time steps reduced (--por on): " << r.reduced_states
         << " states expanded in part; the counts are the reduced graph's\n";
@@ -146,6 +152,8 @@ void print_text_report(std::ostream& out, const ModelRun& run, TraceMode trace) 
     out << "  (explore from arbitrary states: U(A), every valuation is a start state)";
   else if (run.from == "start")
     out << "  (explore from the model's start states)";
+  if (!run.variant.empty())
+    out << "\nvariant: " << variant_text(run.variant);
   out << "\n\n";
   VerdictCounts counts;
   for (const auto& r : run.results) {

@@ -13,6 +13,10 @@ namespace cli {
 // "N=5 K=4"
 std::string format_params(const OrderedParams& params);
 
+// "paper (the algorithm as the paper gives it)", or the variant settings and that they
+// change the paper's algorithm.
+std::string variant_text(const std::string& variant);
+
 // The value as text; an empty text as "", so that it is seen.
 std::string format_value(const catalogue::ParamValue& value);
 

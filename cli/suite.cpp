@@ -115,6 +115,7 @@ int command_suite(const catalogue::Catalogue& models, const RunSettings& setting
       row.values = catalogue::resolve_params(def, param_settings(entry.params));
       row.run.model = def.name;
       row.run.params = ordered_params(def, row.values);
+      row.run.variant = catalogue::variant_name(def, row.values);
       columns.model = std::max(columns.model, def.name.size());
       row.shown_params = shown_params(row.run.params, entry.params);
       columns.params = std::max(columns.params, row.shown_params.size());

@@ -206,6 +206,9 @@ FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& fa
     r.verdict = checker::Verdict::holds;
     r.message = "holds: every claim that decides the verdict, on every run of the family; " + scope;
   }
+  const std::uint64_t configurations = check.instances + check.skipped;
+  r.coverage = {checker::Starts::all, configurations, configurations,
+                "the configurations of the family", ""};
   if (!verdicts.reported.empty())
     r.message += "; reported beside them, not deciding: " + join(verdicts.reported) + " fails";
   r.figures.emplace_back("covered", describe(family) + "; " + std::to_string(check.instances) +

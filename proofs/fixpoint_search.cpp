@@ -219,6 +219,9 @@ FixpointCheck search_fixpoint(const FixpointLemma& lemma, const FixpointSearchOp
   if (!steps.empty())
     r.message += "; reported beside them, not deciding: " + join(steps) + " fails";
 
+  r.coverage = {checker::Starts::sampled, check.instances, std::nullopt,
+                "the configurations of the search's settings",
+                "a random search, seed " + std::to_string(options.seed)};
   r.figures.emplace_back("covered", describe_search(options));
   r.figures.emplace_back("seed", std::to_string(options.seed));
   r.figures.emplace_back("samples", std::to_string(options.samples));

@@ -780,6 +780,10 @@ Lemma68Check check_lemma_6_8(const Lemma68Family& family, const CheckOptions& op
     r.verdict = checker::Verdict::holds;
     r.message = "holds: every claim that decides the verdict, over the whole family; " + scope;
   }
+  // The verdict rests on rho(T) < 1, decided exactly for every (n, rho1) of the family (a
+  // proof for each); the dynamics from the grid and random starts are compared beside it.
+  r.coverage = {checker::Starts::all, check.matrices, check.matrices,
+                "the (n, rho1) pairs of the family", ""};
   if (!reported.empty())
     r.message += "; reported beside them, not deciding: " + join(reported) + " fails";
 

@@ -46,9 +46,11 @@ PropertyResult check_lemma_7_3(const VlConfig& c, MWindow window, const Arbitrar
       judge(std::move(m), static_cast<std::uint64_t>(c.eps_sample) + 1,
             "Lemma 7.3 (in L1MC from any t > eps_sample on)", u.exhaustive, true, detail);
   r.figures.emplace_back("covered", u.covered);
+  r.coverage = u.coverage;
   r.notes.push_back("the bound: time t > eps_sample = " + std::to_string(c.eps_sample) +
                     " is, in whole quanta, t = eps_sample + 1");
   r.notes.push_back("no failure or restart after t0 = 0; failed flags start arbitrary (D13)");
+  note_repairs(c, r);
   note_round_length(c, r);
   return r;
 }

@@ -48,9 +48,22 @@ PropertyResult check_lemma_7_4(const VlConfig& c, MWindow window, const Arbitrar
   };
   PropertyResult m = checker::check_stabilisation(
       tioa::Start(u.layer, from.start(u.layer, "L1MC states reached")), in_lmc, in_lmc, options);
-  PropertyResult r =
-      judge(std::move(m), static_cast<std::uint64_t>(c.delta + c.d + c.e),
-            "Lemma 7.4 (from L1MC, in LMC from delta + d + e on)", complete, false, "");
+  // Every L1MC state is a start state of U(VLNodes) || R(env) (its environment part is
+  // reachable, Def 7.1(1)), so the L1MC states reached cover all of L1MC only when all of
+  // U(VLNodes) || R(env) was explored; a sample covers the L1MC states it reaches.
+  PropertyResult r = judge(std::move(m), static_cast<std::uint64_t>(c.delta + c.d + c.e),
+                           "Lemma 7.4 (from L1MC, in LMC from delta + d + e on)",
+                           u.exhaustive && complete, false, "");
+  const bool all = u.exhaustive && complete;
+  const std::uint64_t covered = r.coverage.count; // distinct start states of the measurement
+  r.coverage = {all ? checker::Starts::all : checker::Starts::sampled, covered, std::nullopt,
+                "L1MC (Def 7.1)",
+                all ? ""
+                    : "the L1MC states reached from the instance's start state and from " +
+                          std::to_string(u.coverage.count) +
+                          " start states of U(VLNodes) || R(env), " + u.coverage.chosen};
+  if (all)
+    r.coverage.of = covered;
   r.figures.emplace_back("known LMC", describe_known(known));
   r.figures.emplace_back(
       "covered", "the " + std::to_string(from_instance) + " L1MC states reachable from " +
@@ -59,6 +72,7 @@ PropertyResult check_lemma_7_4(const VlConfig& c, MWindow window, const Arbitrar
                      " (duplicates counted once by the exploration), not all of L1MC: its " +
                      "valuations are too many to enumerate");
   r.notes.push_back(lmc_measure_note);
+  note_repairs(c, r);
   note_round_length(c, r);
   return r;
 }

@@ -79,6 +79,11 @@ PropertyResult check_lemma_7_6(const VlConfig& c, const tioa::Automaton& layer, 
                                         " initial pairs (x a family state, y each related "
                                         "reachable state; " +
                                         family_figure(c, m) + ")");
+  // A simulation relation is a claim about every related pair; the search covers those
+  // reachable from Lemma 7.7's pairs (D24).
+  r.coverage = {checker::Starts::sampled, search.pairs, std::nullopt,
+                "the pairs related by R_MC (seed 000 §7.3)",
+                "the pairs reachable from lemma-7.7's initial pairs, D24"};
   r.figures.emplace_back("pairs", std::to_string(search.pairs));
   r.figures.emplace_back("initial pairs", std::to_string(search.initial_pairs));
   r.figures.emplace_back("Reach", std::to_string(m.reach.store.size()));

@@ -43,6 +43,8 @@ PropertyResult check_lemma_7_7(const VlConfig& c, const tioa::Automaton& layer, 
   const Matching m = match_family(c, layer, full, window, options, reading);
   PropertyResult r = checker::result_of("simulation", m.reach, generator);
   r.figures.emplace_back("covered", family_figure(c, m));
+  r.coverage = {checker::Starts::sampled, m.family.size(), std::nullopt, "ResetMC (Def 7.2)",
+                "the reset family, D23"};
   r.figures.emplace_back("Reach", std::to_string(m.reach.store.size()) + " states of " +
                                       every_placement(c, full).description());
   note_rmc_reading(c, window, reading, r);

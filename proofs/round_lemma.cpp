@@ -179,6 +179,12 @@ LemmaCheck finish(const RoundLemma& lemma, Tallies&& tallies, const std::string&
     r.message = "holds: every claim on every round of the family; " + scope;
   }
 
+  // A family quantifies over every configuration of its settings (symmetric duplicates
+  // count as covered by the one checked); a random search covers its samples.
+  const std::uint64_t configurations = check.instances + check.skipped;
+  r.coverage = {sample ? checker::Starts::sampled : checker::Starts::all, configurations,
+                sample ? std::nullopt : std::optional<std::uint64_t>(configurations),
+                "the configurations of the family", sample ? "a random search" : ""};
   r.figures = std::move(figures);
   r.figures.insert(r.figures.begin(), {"covered", covered});
   r.figures.emplace_back("instances checked", std::to_string(check.instances));

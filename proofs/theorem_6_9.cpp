@@ -594,6 +594,12 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
     r.verdict = checker::Verdict::holds;
     r.message = "holds: every claim on every run; " + scope;
   }
+  r.coverage = {positions.samples > 0 ? checker::Starts::sampled : checker::Starts::all,
+                check.counts.instances + check.runs, std::nullopt,
+                "the configurations of the family",
+                positions.samples > 0 ? "positions drawn at random" : ""};
+  if (positions.samples == 0)
+    r.coverage.of = r.coverage.count;
   r.figures.emplace_back("covered (count level)", check.counts.result.figures.front().second);
   r.figures.emplace_back("covered (positions)", positions.describe() + "; " +
                                                     std::to_string(check.runs) + " runs, " +

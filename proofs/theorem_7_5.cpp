@@ -49,6 +49,7 @@ PropertyResult check_theorem_7_5(const VlConfig& c, MWindow window, const Arbitr
   r.figures.emplace_back("t2 (L1MC -> LMC, Lemma 7.4)", time_of(second));
   r.figures.emplace_back("t (start -> LMC, direct)", time_of(direct));
   r.figures.emplace_back("covered", u.covered);
+  r.coverage = u.coverage;
   if (first.worst_time && second.worst_time && direct.worst_time &&
       *direct.worst_time > *first.worst_time + *second.worst_time) {
     r.verdict = Verdict::violated;
@@ -63,6 +64,7 @@ PropertyResult check_theorem_7_5(const VlConfig& c, MWindow window, const Arbitr
   r.seconds = first.seconds + second.seconds + direct.seconds;
   r.figures.emplace_back("known LMC", describe_known(known));
   r.notes.push_back(lmc_measure_note);
+  note_repairs(c, r);
   note_round_length(c, r);
   return r;
 }

@@ -27,7 +27,7 @@ tioa::Automaton cn(const VlConfig& c, int p) {
   const auto velocity_due = [=](const State& s) { return s.is_bottom(v) || s[v] != desired(s); };
   // Def 7.1(4b): x* = x, or x* lies nearer than v_max(δ⌈clock/δ⌉ − clock − d_r).
   const int delta_rule = c.delta, vmax_rule = c.vmax, d_r = c.d_r;
-  const bool filter = c.filter_targets;
+  const bool filter = c.filter_targets, repair = c.cn_repair;
   const int target_phase = c.target_phase(), arrival = c.d;
   const auto reachable = [=](Point at, Point goal, int phase) {
     const int left = phase == 0 ? 0 : delta_rule - phase;
@@ -39,10 +39,16 @@ tioa::Automaton cn(const VlConfig& c, int p) {
 
   a.input(names::gps_update(p), {{"l", 0, points - 1}, {"t", 0, c.delta - 1}})
       .eff([=](State& s, const Params& m) {
-        // D25 self-stabilisation: a CN whose view was wrong (position or clock) no longer
-        // knows its velocity (v := ⊥, so the stop-when condition outputs a velocity at
-        // once) nor trusts its target (taken under the wrong view: x* := ⊥), and a target it
-        // cannot reach in this round (Def 7.1(4b)) is dropped. On every state reachable
+        // The paper: the CN records its position and the time.
+        if (!repair) {
+          s[x] = m[0];
+          s[clock] = m[1];
+          return;
+        }
+        // D25 (cn_repair) self-stabilisation: a CN whose view was wrong (position or clock)
+        // no longer knows its velocity (v := ⊥, so the stop-when condition outputs a velocity
+        // at once) nor trusts its target (taken under the wrong view: x* := ⊥), and a target
+        // it cannot reach in this round (Def 7.1(4b)) is dropped. On every state reachable
         // without failures these are no-ops: the view is right and (4b) holds.
         const bool wrong = (!s.is_bottom(x) && (s[x] != m[0] || s.is_bottom(clock))) ||
                            (!s.is_bottom(clock) && s[clock] != m[1]);
@@ -57,8 +63,9 @@ tioa::Automaton cn(const VlConfig& c, int p) {
           s.set_bottom(target);
       })
       .footprint([=](const Params& m, tioa::Footprint& f) {
-        f.reads(x).reads(clock).reads(target);
-        f.sets(x, m[0]).sets(clock, m[1]).sets_bottom(v).sets_bottom(target);
+        f.sets(x, m[0]).sets(clock, m[1]);
+        if (repair)
+          f.reads(x).reads(clock).reads(target).sets_bottom(v).sets_bottom(target);
       });
   a.output(names::vcast_cn_update(p), {{"l", 0, points - 1}})
       .pre([=](const State& s, const Params& m) { return cn_update_due(s) && m[0] == s[x]; })

@@ -19,9 +19,18 @@ struct VlConfig {
   int delta = 6, d = 1, e = 0, eps = 0, eps_sample = 1, d_r = 1, vmax = 4;
   int k = 1;
   mc::Rational rho1{1, 2}, rho2{9, 10};
+  // Changes to the paper's CN and VN, each off by default (the paper's reconstruction) and
+  // each a no-op on every state reachable without failures (README "Self-stabilising CN and
+  // VN"). The first runs of lemma-7.3 led to them.
+  // D25: a GPSupdate that finds the CN's view wrong resets v_p and x*_p, and drops a target
+  // the robot cannot reach in the round (Def 7.1(4b)).
+  bool cn_repair = false;
+  // D26: VN_u empties M_u on a time update that corrects its clock or comes after
+  // e + 2d + 2ε, and ignores a cn-update after e + d + ε.
+  bool vn_repair = false;
   // D28: a CN ignores a target-update that arrives outside [e + 2d + 2ε, e + 3d + 2ε] or
-  // that it could not reach in the round (Def 7.1(4b)). Off by default: it hides what a too
-  // short round breaks (F3); Lemma 7.3 needs it (F5).
+  // that it could not reach in the round (Def 7.1(4b)). It hides what a too short round
+  // breaks (F3); Lemma 7.3 needs it (F5).
   bool filter_targets = false;
 
   Lattice lattice() const { return Lattice(rows, cols, b, nbh); }

@@ -44,25 +44,31 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
     return false;
   };
 
-  // D26 self-stabilisation: M_u holds reports only in the part of a round where Def 7.1(2)
-  // (read with the window closed, F1) allows them, and only from a round the VSA knew the
-  // time of: a time update that corrects the clock or comes after e + 2d + 2ε empties M,
-  // and a cn-update that arrives after the vn-update (e + d + ε) is ignored. On every state
-  // reachable without failures these are no-ops: the clock is right, cn-updates arrive by
-  // e + d, and M is emptied at e + 2d + 2ε.
-  const auto collecting = [=](int phase) { return phase <= vn_phase; };
+  // D26 (vn_repair) self-stabilisation: M_u holds reports only in the part of a round where
+  // Def 7.1(2) (read with the window closed, F1) allows them, and only from a round the VSA
+  // knew the time of: a time update that corrects the clock or comes after e + 2d + 2ε
+  // empties M, and a cn-update that arrives after the vn-update (e + d + ε) is ignored. On
+  // every state reachable without failures these are no-ops: the clock is right, cn-updates
+  // arrive by e + d, and M is emptied at e + 2d + 2ε. The paper: the VSA records the time,
+  // and collects a cn-update whenever it has a clock.
+  const bool repair = c.vn_repair;
+  const auto collecting = [=](int phase) { return !repair || phase <= vn_phase; };
   a.input(names::time(u), {{"t", 0, c.delta - 1}})
       .eff([=](State& s, const Params& m) {
-        const bool wrong = !s.is_bottom(clock) && s[clock] != m[0];
+        const bool reset =
+            repair && ((!s.is_bottom(clock) && s[clock] != m[0]) || m[0] > target_phase);
         s[clock] = m[0];
-        if (wrong || m[0] > target_phase)
+        if (reset)
           for (int p = 0; p < n; ++p)
             s.set_bottom(M[p]);
       })
       .footprint([=](const Params& m, tioa::Footprint& f) {
-        f.reads(clock).sets(clock, m[0]);
-        for (const auto& reports : M)
-          f.sets_bottom(reports);
+        f.sets(clock, m[0]);
+        if (repair) {
+          f.reads(clock);
+          for (const auto& reports : M)
+            f.sets_bottom(reports);
+        }
       });
   a.input(names::vrcv_cn_update(u), {{"p", 0, n - 1}, {"l", 0, points - 1}})
       .eff([=](State& s, const Params& m) {

@@ -97,6 +97,7 @@ UStarts u_starts(const VlConfig& c, const ArbitraryStarts& a,
     u.states.data.insert(u.states.data.end(), buffer.begin(), buffer.end() - 1);
   };
 
+  const std::string over = "U(VLNodes) || R(RW || VW || VBcast)";
   u.exhaustive = reach.all && u.space <= static_cast<long double>(a.exhaustive_limit);
   if (u.exhaustive) {
     for (std::size_t id = 0; id < reach.states.size(); ++id) {
@@ -115,6 +116,7 @@ UStarts u_starts(const VlConfig& c, const ArbitraryStarts& a,
     }
     u.covered = "every start state of U(VLNodes) || R(RW || VW || VBcast): " +
                 std::to_string(u.states.size());
+    u.coverage = {checker::Starts::all, u.states.size(), u.states.size(), over, ""};
     return u;
   }
   std::mt19937_64 random(a.seed);
@@ -128,6 +130,11 @@ UStarts u_starts(const VlConfig& c, const ArbitraryStarts& a,
   }
   char space[32];
   std::snprintf(space, sizeof space, "%.2Le", u.space);
+  u.coverage = {checker::Starts::sampled, a.samples, std::nullopt, over,
+                "drawn at random, seed " + std::to_string(a.seed) +
+                    (reach.all ? "" : ", the environment's state at the end of a random walk")};
+  if (reach.all && u.space < 1.8e19L)
+    u.coverage.of = static_cast<std::uint64_t>(u.space);
   u.covered =
       std::to_string(a.samples) + " start states drawn at random (seed " + std::to_string(a.seed) +
       ") from U(VLNodes) || R(RW || VW || VBcast), " +

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "checker/options.hpp"
+#include "checker/result.hpp"
 #include "models/vlayer_mc/config.hpp"
 #include "models/vlayer_mc/state_list.hpp"
 #include "models/vlayer_mc/vlayer.hpp"
@@ -31,6 +32,8 @@ struct UStarts {
   long double space = 0; // |valuations of VLNodes| · |Reach(env)|
   std::uint64_t environment_states = 0;
   std::string covered; // what was drawn, for the figure `covered`
+  // All of U(VLNodes) || R(env) when enumerated, else the sample (issue 15: `coverage`).
+  checker::Coverage coverage;
 };
 
 UStarts u_starts(const VlConfig& config, const ArbitraryStarts& starts,

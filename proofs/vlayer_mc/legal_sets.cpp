@@ -53,6 +53,36 @@ void note_round_length(const VlConfig& c, PropertyResult& r) {
                     std::to_string(round_length_bound(c)) + "); checked anyway");
 }
 
+void note_repairs(const VlConfig& c, PropertyResult& r) {
+  // Violated, or a time above the bound that judge() could only call "not confirmed".
+  if (r.verdict != Verdict::violated && r.message.find("not confirmed") == std::string::npos)
+    return;
+  // Which change repairs which clause of Def 7.1 (README "Self-stabilising CN and VN").
+  struct Repair {
+    bool on;
+    const char* setting;
+    const char* decision;
+    const char* clauses;
+  };
+  const Repair repairs[] = {
+      {c.cn_repair, "cn_repair=1", "D25",
+       "a CN's v_p and x*_p after a wrong view: (3), (4a), (4b)"},
+      {c.vn_repair, "vn_repair=1", "D26", "junk reports in M_u: (2)"},
+      {c.filter_targets, "filter_targets=1", "D28", "a target-update out of its window: (4c)"}};
+  std::string off, settings;
+  for (const Repair& repair : repairs)
+    if (!repair.on) {
+      off += std::string(off.empty() ? "" : "; ") + repair.decision + " " + repair.setting + " (" +
+             repair.clauses + ")";
+      settings += std::string(settings.empty() ? "" : ",") + repair.setting;
+    }
+  if (off.empty())
+    return;
+  r.notes.push_back("run with the paper's CN and VN in these respects; the changes that "
+                    "repair them (models/vlayer_mc/README.md): " +
+                    off + "; check the repaired variant with -p " + settings);
+}
+
 PropertyResult check_l1mc_closure(const VlConfig& c, const tioa::Automaton& system, MWindow window,
                                   const checker::ExploreOptions& options) {
   const tioa::SuccessorGenerator generator(system);
@@ -65,6 +95,9 @@ PropertyResult check_l1mc_closure(const VlConfig& c, const tioa::Automaton& syst
 
   PropertyResult r = checker::result_of("legal-set", ex, generator);
   const std::string reached = "reachable from " + system.start().description();
+  // Closure is a claim about every L1MC state; the search asks it of those it reaches.
+  r.coverage = {checker::Starts::sampled, ex.expanded, std::nullopt, "L1MC (Def 7.1)",
+                "the L1MC states " + reached};
   if (ex.found) {
     closure_counterexample(r, generator, ex, clauses, reached);
     r.figures.emplace_back("covered", "closure from the " + std::to_string(ex.expanded) +
@@ -149,6 +182,10 @@ PropertyResult check_reset_in_l1mc(const VlConfig& c, const tioa::Automaton& sys
     }
   });
 
+  r.coverage = {checker::Starts::sampled, reached_reset + family_reset, std::nullopt,
+                "ResetMC (Def 7.2)",
+                "the ResetMC states reachable from " + system.start().description() +
+                    " and the reset family, D23"};
   r.figures.emplace_back("covered", "the " + std::to_string(ex.store.size()) +
                                         " states reachable from " + system.start().description() +
                                         " (" + std::to_string(reached_reset) +
@@ -205,6 +242,10 @@ PropertyResult check_lmc_closure(const VlConfig& c, const tioa::Automaton& layer
   const tioa::SuccessorGenerator generator(from);
 
   PropertyResult r = checker::result_of("legal-set", ex, generator);
+  // LMC is what all of ResetMC reaches; the family is a part of ResetMC (D23).
+  r.coverage = {checker::Starts::sampled, lmc.family_size(), std::nullopt,
+                "ResetMC (Def 7.2), whose reachable states are LMC",
+                "the reset family with every combination of failed nodes, D23"};
   r.figures.emplace_back("covered", "LMC from the " + describe_reset_family(c) +
                                         ", each with every combination of failed nodes (" +
                                         std::to_string(lmc.family_size()) +

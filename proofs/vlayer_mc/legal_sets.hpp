@@ -28,6 +28,10 @@ checker::PropertyResult check_reset_in_l1mc(const VlConfig& config, const tioa::
 checker::PropertyResult check_lmc_closure(const VlConfig& config, const tioa::Automaton& layer,
                                           MWindow window, const checker::ExploreOptions& options);
 
+// For a run that fails or is not confirmed: the variant parameters still off (the paper's version),
+// the decision of the README each stands for, and the clauses of Def 7.1 it repairs.
+void note_repairs(const VlConfig& config, checker::PropertyResult& result);
+
 // A note line when δ breaks the round-length rule of §5.5 (line 981), else nothing.
 void note_round_length(const VlConfig& config, checker::PropertyResult& result);
 

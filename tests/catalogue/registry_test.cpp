@@ -208,3 +208,24 @@ TEST_CASE("builtin_models: vlayer-mc and path-reservation bring their pictures",
           (def.name == "vlayer-mc" || def.name == "path-reservation"));
   }
 }
+
+// Issue 15: a variant parameter's default is the paper's algorithm, and the name of the
+// variant run lists those set away from it.
+TEST_CASE("variant_name: paper by default, else the changes", "[models][registry][variant]") {
+  const catalogue::Catalogue models = catalogue::builtin_models();
+  const catalogue::ModelDefinition& vlayer = models.find("vlayer-mc");
+  std::vector<std::string> variants;
+  for (const auto& p : vlayer.params)
+    if (p.variant)
+      variants.push_back(p.name);
+  CHECK(variants == std::vector<std::string>{"cn_repair", "vn_repair", "filter_targets"});
+  CHECK(catalogue::variant_name(vlayer, catalogue::resolve_params(vlayer, {})) == "paper");
+  CHECK(catalogue::variant_name(vlayer, catalogue::resolve_params(vlayer, {"rows=2"})) == "paper");
+  CHECK(catalogue::variant_name(
+            vlayer, catalogue::resolve_params(vlayer, {"filter_targets=1", "cn_repair=1"})) ==
+        "cn_repair=1,filter_targets=1");
+  const catalogue::ModelDefinition& paths = models.find("path-reservation");
+  CHECK(catalogue::variant_name(
+            paths, catalogue::resolve_params(paths, {"variant=release-before-reserve"})) ==
+        "variant=release-before-reserve");
+}

@@ -668,3 +668,47 @@ TEST_CASE("run_property: dispatches on the kind and names the result", "[checker
   CHECK(to_string(Verdict::violated) == std::string("violated"));
   CHECK(to_string(Verdict::incomplete) == std::string("incomplete"));
 }
+
+// Issue 15: a verdict claims only what was covered.
+TEST_CASE("run_property: holds only on all the start states a statement quantifies over",
+          "[checker][property][coverage]") {
+  const auto ring = token_ring::build(4, 3);
+  Property invariant{
+      "some-privileged", "", PropertyKind::invariant, some_privileged(ring), "", {}, ""};
+  const PropertyResult all = run_property(ring.system, invariant, {});
+  CHECK(all.verdict == Verdict::holds);
+  CHECK(all.coverage.starts == Starts::all);
+  CHECK(all.coverage.count == all.coverage.of);
+  CHECK(all.coverage.count >= 1);
+
+  // A custom check that covered a part of its statement: its holds is incomplete.
+  const auto covering = [](Starts starts) {
+    return Property{
+        "part", "", PropertyKind::custom, {}, "", {}, "", [starts](const ExploreOptions&) {
+          PropertyResult r;
+          r.verdict = Verdict::holds;
+          r.message = "no step leaves L";
+          r.coverage = {starts, 7, 100, "L", "drawn at random"};
+          return r;
+        }};
+  };
+  const PropertyResult sampled = run_property(ring.system, covering(Starts::sampled), {});
+  CHECK(sampled.verdict == Verdict::incomplete);
+  CHECK(sampled.message ==
+        "holds on 7 of 100 (drawn at random), not on all of L: no step leaves L");
+  const PropertyResult one = run_property(ring.system, covering(Starts::one), {});
+  CHECK(one.verdict == Verdict::incomplete);
+  CHECK_THAT(one.message, Catch::StartsWith("holds from one start state"));
+  CHECK(run_property(ring.system, covering(Starts::all), {}).verdict == Verdict::holds);
+  CHECK(describe(sampled.coverage) == "sampled, 7 of 100: L (drawn at random)");
+
+  // A violation found on a part is a violation.
+  Property broken = covering(Starts::sampled);
+  broken.run = [](const ExploreOptions&) {
+    PropertyResult r;
+    r.verdict = Verdict::violated;
+    r.coverage.starts = Starts::sampled;
+    return r;
+  };
+  CHECK(run_property(ring.system, broken, {}).verdict == Verdict::violated);
+}

@@ -1,7 +1,8 @@
 // The stabilisation properties of `vlayer-mc`: Lemma 7.3, Lemma 7.4 and Theorem 7.5
 // (proofs/lemma_7_3.hpp, lemma_7_4.hpp, theorem_7_5.hpp) on the 1×1 grid with one robot and the
 // cheap constants (δ = 6, d = 1, e = ε = 0, ε_sample = 1, d_r = 1, v_max = 4), window closed, 1 000
-// start states drawn with seed 1 from U(VLNodes) × R(env); and finding F5 on 1×2 (README).
+// start states drawn with seed 1 from U(VLNodes) × R(env); and finding F5 on 1×2 (README). The
+// paper's CN and VN (the default) and the repaired ones (cn_repair, vn_repair: D25, D26).
 #include <catch2/catch.hpp>
 
 #include "checker/trace.hpp"
@@ -19,9 +20,36 @@ vl_test::PropertyRun run(const std::string& property, std::vector<std::string> s
 
 } // namespace
 
-// Sampled, so never "holds": the bound ε_sample + 1 = 2 is met, and reached.
-TEST_CASE("vlayer-mc lemma-7.3 on 1x1: in L1MC from time 2 on every sample", "[vlayer]") {
+// The paper's CN and VN (the default): a CN that dead-reckons with a junk velocity leaves
+// its real position between GPS updates, (4a), until time 7 against the bound 2. The note
+// names the repairs; D25 alone leaves junk reports in M_u, (2), until time 6.
+TEST_CASE("vlayer-mc lemma-7.3 on 1x1: the paper's CN and VN fail it", "[vlayer]") {
   const auto [r, system] = run("lemma-7.3", {"cols=1"});
+  CHECK(r.verdict == checker::Verdict::violated);
+  CHECK(r.worst_time == 7u);
+  CHECK_THAT(r.message, Catch::Contains("breaks (4a) CN_0"));
+  REQUIRE(r.trace);
+  CHECK(r.trace_role == "counterexample");
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(system), *r.trace, &why));
+  const auto noted = [&](const std::string& text) {
+    for (const auto& note : r.notes)
+      if (note.find(text) != std::string::npos)
+        return true;
+    return false;
+  };
+  CHECK(noted("D25 cn_repair=1"));
+  CHECK(noted("D26 vn_repair=1"));
+
+  const auto cn_only = run("lemma-7.3", {"cols=1", "cn_repair=1"}).result;
+  CHECK(cn_only.verdict == checker::Verdict::violated);
+  CHECK(cn_only.worst_time == 6u);
+  CHECK_THAT(cn_only.message, Catch::Contains("breaks (2) VN_0"));
+}
+
+// Sampled, so never "holds": the bound ε_sample + 1 = 2 is met, and reached.
+TEST_CASE("vlayer-mc lemma-7.3 on 1x1, repaired: in L1MC from time 2 on every sample", "[vlayer]") {
+  const auto [r, system] = run("lemma-7.3", {"cols=1", "cn_repair=1", "vn_repair=1"});
   CHECK(r.verdict == checker::Verdict::incomplete);
   CHECK(r.worst_time == 2u);
   CHECK(figure(r, "bound") == "2 quanta");
@@ -36,7 +64,7 @@ TEST_CASE("vlayer-mc lemma-7.3 on 1x1: in L1MC from time 2 on every sample", "[v
 // L1MC at time 2 = ε_sample + 1: a real counterexample. With filter_targets (D28) the CN
 // ignores such targets and every sample meets the bound.
 TEST_CASE("vlayer-mc lemma-7.3 on 1x2: finding F5, and D28", "[vlayer]") {
-  const auto [r, system] = run("lemma-7.3", {"samples=200"});
+  const auto [r, system] = run("lemma-7.3", {"samples=200", "cn_repair=1", "vn_repair=1"});
   CHECK(r.verdict == checker::Verdict::violated);
   CHECK(r.worst_time == 3u);
   CHECK_THAT(r.message, Catch::Contains("breaks (4c) CN_0"));
@@ -45,14 +73,19 @@ TEST_CASE("vlayer-mc lemma-7.3 on 1x2: finding F5, and D28", "[vlayer]") {
   std::string why;
   CHECK(checker::replay(tioa::SuccessorGenerator(system), *r.trace, &why));
 
-  const auto filtered = run("lemma-7.3", {"samples=200", "filter_targets=1"}).result;
+  const auto filtered =
+      run("lemma-7.3", {"samples=200", "cn_repair=1", "vn_repair=1", "filter_targets=1"}).result;
   CHECK(filtered.verdict == checker::Verdict::incomplete);
   CHECK(filtered.worst_time == 2u);
 }
 
+// Lemma 7.4 speaks of every L1MC state; the start states are a sample of U(VLNodes), so the
+// L1MC states they reach are a part of L1MC: incomplete, never holds (issue 15).
 TEST_CASE("vlayer-mc lemma-7.4 on 1x1: from the L1MC states reached, LMC within 7", "[vlayer]") {
   const auto [r, system] = run("lemma-7.4", {"cols=1"});
-  CHECK(r.verdict == checker::Verdict::holds);
+  CHECK(r.verdict == checker::Verdict::incomplete);
+  CHECK(r.coverage.starts == checker::Starts::sampled);
+  CHECK(r.coverage.over == "L1MC (Def 7.1)");
   CHECK(r.worst_time == 6u);
   CHECK(figure(r, "bound") == "7 quanta");
   CHECK_THAT(
@@ -61,8 +94,18 @@ TEST_CASE("vlayer-mc lemma-7.4 on 1x1: from the L1MC states reached, LMC within 
   CHECK_THAT(figure(r, "covered"), Catch::Contains("not all of L1MC"));
 }
 
-TEST_CASE("vlayer-mc theorem-7.5 on 1x1: directly and through Lemma 3.4", "[vlayer]") {
+// The paper's CN and VN: Lemma 7.3 fails, and LMC is reached at 10 against the bound 8, above
+// what the known part of LMC can confirm (a witness, not a counterexample: D29).
+TEST_CASE("vlayer-mc theorem-7.5 on 1x1: the paper's CN and VN are not confirmed", "[vlayer]") {
   const auto [r, system] = run("theorem-7.5", {"cols=1"});
+  CHECK(r.verdict == checker::Verdict::incomplete);
+  CHECK(r.worst_time == 10u);
+  CHECK_THAT(r.message, Catch::Contains("not confirmed"));
+  CHECK(figure(r, "t1 (start -> L1MC, Lemma 7.3)") == "7");
+}
+
+TEST_CASE("vlayer-mc theorem-7.5 on 1x1, repaired: directly and through Lemma 3.4", "[vlayer]") {
+  const auto [r, system] = run("theorem-7.5", {"cols=1", "cn_repair=1", "vn_repair=1"});
   CHECK(r.verdict == checker::Verdict::incomplete); // sampled start states
   CHECK(r.worst_time == 6u);
   CHECK(figure(r, "bound") == "8 quanta");
