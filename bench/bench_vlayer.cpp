@@ -75,9 +75,11 @@ const std::vector<Case>& cases() {
       {"1x3-r1", "no-timelock", true, 32'134, 175'049},
       {"1x3-r1", "l1mc-closure", true, 32'134, 175'049},
       {"1x3-r1", "lmc-closure", true, 724'761, 3'499'703},
-      {"1x2-r1-rf", "no-timelock", true, 134'897, 725'291},
-      {"1x2-r1-rf", "l1mc-closure", true, 134'897, 725'291},
-      {"1x2-r1-rf", "lmc-closure", true, 154'611, 849'781},
+      // The paper's CN (the default); with cn_repair (D25), which drops stale targets after
+      // a restart: 134,897 / 725,291 and lmc-closure 154,611 / 849,781.
+      {"1x2-r1-rf", "no-timelock", true, 136'093, 731'251},
+      {"1x2-r1-rf", "l1mc-closure", true, 136'093, 731'251},
+      {"1x2-r1-rf", "lmc-closure", true, 155'355, 852'583},
       {"1x2-r1-vf", "no-timelock", true, 205'980, 1'309'564},
       {"1x2-r1-vf", "l1mc-closure", true, 205'980, 1'309'564},
       {"1x2-r1-vf", "lmc-closure", true, 133'744, 954'524},
@@ -165,8 +167,13 @@ int run_case(const Case& c, const Settings& settings) {
   }
   const checker::PropertyResult r = checker::run_property(m.system, *property, options);
 
-  std::string verdict = checker::to_string(r.verdict);
-  if (r.verdict == checker::Verdict::incomplete) {
+  // A closure asked of the states an instance reaches holds on them but is a claim about
+  // the whole set, so run_property reports it incomplete, "holds on N ..." (issue 15): that
+  // is the case's result, not a limit.
+  const bool held_on_part =
+      r.verdict == checker::Verdict::incomplete && r.message.rfind("holds ", 0) == 0;
+  std::string verdict = held_on_part ? "holds on the part covered" : checker::to_string(r.verdict);
+  if (r.verdict == checker::Verdict::incomplete && !held_on_part) {
     // "time limit reached after N states ..." -> the reason only.
     const std::string reason = r.message.substr(0, r.message.find(" after "));
     verdict = "incomplete after " + std::to_string(r.states) + " states (" + reason + ")";
@@ -176,14 +183,18 @@ int run_case(const Case& c, const Settings& settings) {
               verdict.c_str(), static_cast<unsigned long long>(r.states),
               static_cast<unsigned long long>(r.edges), r.seconds, rate, peak_memory_mib(),
               r.threads);
-  if (r.verdict == checker::Verdict::incomplete) {
+  if (r.verdict == checker::Verdict::incomplete && !held_on_part) {
     std::fflush(stdout);
     return 3;
   }
   int status = 0;
-  if (r.verdict != c.verdict) {
+  const checker::Verdict expected =
+      c.verdict == checker::Verdict::holds && c.property != std::string("no-timelock")
+          ? checker::Verdict::incomplete // a closure: holds on the states covered
+          : c.verdict;
+  if (r.verdict != expected) {
     std::printf("MISMATCH %s: verdict %s, expected %s: %s\n", name_of(c).c_str(),
-                checker::to_string(r.verdict), checker::to_string(c.verdict), r.message.c_str());
+                checker::to_string(r.verdict), checker::to_string(expected), r.message.c_str());
     status = 1;
   } else if (r.verdict == checker::Verdict::violated) {
     std::printf("  %s\n", r.message.c_str());
