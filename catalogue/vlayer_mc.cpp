@@ -189,6 +189,11 @@ ModelDefinition vlayer_mc_definition() {
   ParamValues repaired_1x1 = closed_1x1;
   repaired_1x1.emplace("cn_repair", 1);
   repaired_1x1.emplace("vn_repair", 1);
+  const ParamValues slow_1x2{
+      {"window", ParamValue::choice("closed")}, {"e", 1}, {"eps", 1}, {"delta", 10}};
+  ParamValues slow_repaired_1x2 = slow_1x2;
+  for (const char* repair : {"cn_repair", "vn_repair", "filter_targets"})
+    slow_repaired_1x2.emplace(repair, 1);
   d.suite = {{{}, "no-timelock", checker::Verdict::holds},
              {{}, "l1mc-closure", checker::Verdict::violated}, // finding F1
              {closed_1x1, "l1mc-closure", checker::Verdict::incomplete},
@@ -209,7 +214,11 @@ ModelDefinition vlayer_mc_definition() {
              // §7.3 on 1×1: R_MC is a simulation on the pairs reached; Lemma 7.7 fails as
              // printed (finding F4).
              {closed_1x1, "lemma-7.6", checker::Verdict::incomplete},
-             {closed_1x1, "lemma-7.7", checker::Verdict::violated}};
+             {closed_1x1, "lemma-7.7", checker::Verdict::violated},
+             // A client buffer that delays (e = 1) and the slack ε = 1 (δ = 10 meets the
+             // round-length rule, 9): the instance, and Lemma 7.3 on 1×2 fully repaired.
+             {slow_1x2, "no-timelock", checker::Verdict::holds},
+             {slow_repaired_1x2, "lemma-7.3", checker::Verdict::incomplete}};
   return d;
 }
 

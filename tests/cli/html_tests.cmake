@@ -78,7 +78,9 @@ foreach(variant IN ITEMS "" _chromium)
                        "<line class=\"msg cn-update\""
                        "cn-update ⟨0, \\(0,2\\)⟩ in VBcast, age 0"
                        "step 5: after <code>vrcv_cn_update_0\\(0,10\\)</code>, t = 0"
-                       "VSA 0: clock 0, M = {0 at \\(0,2\\)}</li>")
+                       "VSA 0: clock 0, M = {0 at \\(0,2\\)}</li>"
+                       "; variant: paper \\(the algorithm as the paper gives it\\)"
+                       "<i>\\(covered: sampled, 28: L1MC \\(Def 7.1\\), the L1MC states reachable")
 endforeach()
 
 # path-reservation: each frame a picture of the plane (catalogue/path_reservation_picture.cpp).
