@@ -73,7 +73,8 @@ path_reservation::Scenario chosen_scenario(const ParamValues& params) {
   try {
     return path_reservation::read_scenario_file(file);
   } catch (const std::invalid_argument& e) {
-    throw tioa::ModelError(e.what()); // one line: <file>:<line>: what is wrong
+    // Bad input, one line: "parameter scenario_file: <file>:<line>: what is wrong".
+    throw UsageError(std::string("parameter scenario_file: ") + e.what());
   }
 }
 

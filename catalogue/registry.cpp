@@ -108,11 +108,18 @@ ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::
   ParamValues values;
   for (const auto& p : model.params)
     values[p.name] = p.default_value;
+  std::map<std::string, std::string> given; // name -> the setting that gave it
   for (const auto& setting : settings) {
     const auto eq = setting.find('=');
     if (eq == std::string::npos || eq == 0)
-      throw UsageError("parameter setting '" + setting + "' is not of the form name=value");
+      throw UsageError("parameter setting '" + support::printable(setting) +
+                       "' is not of the form name=value");
     const std::string name = setting.substr(0, eq), text = setting.substr(eq + 1);
+    // Two values for one parameter: which one was meant is not for us to guess.
+    if (const auto [earlier, first] = given.emplace(name, setting); !first)
+      throw UsageError("parameter " + support::printable(name) + " is given twice (" +
+                       support::printable(earlier->second) + " and " + support::printable(setting) +
+                       ")");
     const ParamSpec* spec = nullptr;
     for (const auto& p : model.params)
       if (p.name == name)
@@ -132,6 +139,9 @@ ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::
       continue;
     }
     if (spec->kind == ParamKind::text) {
+      if (text.empty())
+        throw UsageError("parameter " + name +
+                         ": an empty value (leave the parameter out for its default)");
       values[name] = ParamValue::text(text);
       continue;
     }
@@ -139,13 +149,17 @@ ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::
     if (spec->kind == ParamKind::integer) {
       std::int64_t whole = 0;
       const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), whole);
-      if (error != std::errc() || end != text.data() + text.size() || text.empty())
-        throw UsageError("parameter " + name + ": '" + text + "' is not a whole number");
+      const bool all_read = end == text.data() + text.size() && !text.empty();
+      if (error == std::errc::result_out_of_range && all_read) // a whole number, too large
+        throw UsageError("parameter " + name + " = " + text + " is out of range " + spec->range());
+      if (error != std::errc() || !all_read)
+        throw UsageError("parameter " + name + ": '" + support::printable(text) +
+                         "' is not a whole number");
       value = whole;
     } else {
       const auto rational = support::parse_rational(text);
       if (!rational)
-        throw UsageError("parameter " + name + ": '" + text +
+        throw UsageError("parameter " + name + ": '" + support::printable(text) +
                          "' is not a rational number (write 9/10, 0.9 or 2)");
       value = ParamValue(*rational);
     }

@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -15,6 +17,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/exit_status.hpp"
+#include "support/text.hpp"
 #include "tioa/errors.hpp"
 
 namespace cli {
@@ -67,7 +70,8 @@ int print_error(const std::string& program, const std::string& message) {
   for (char& c : line)
     if (c == '\n' || c == '\r')
       c = ' ';
-  std::cerr << program << ": error: " << line << std::endl;
+  // Whatever a message quotes of the input, the line stays printable.
+  std::cerr << program << ": error: " << support::printable(line) << std::endl;
   return usage_error;
 }
 
@@ -155,9 +159,7 @@ void add_run_options(CLI::App* command, RunSettings& settings, Limits& limits, s
   }
 }
 
-} // namespace
-
-int run(int argc, char** argv, const catalogue::Catalogue& models, const Program& program) {
+int run_command(int argc, char** argv, const catalogue::Catalogue& models, const Program& program) {
   const std::string name = program_name(program, argc, argv);
   const auto fail = [&](const std::string& message) { return print_error(name, message); };
   CLI::App app{program.description.empty()
@@ -263,6 +265,23 @@ int run(int argc, char** argv, const catalogue::Catalogue& models, const Program
   } catch (const std::exception& e) {
     return fail(std::string("internal error: ") + e.what());
   }
+}
+
+} // namespace
+
+int run(int argc, char** argv, const catalogue::Catalogue& models, const Program& program) {
+  const int code = run_command(argc, argv, models, program);
+  // A report that did not reach standard output (a full disk, a closed pipe) is lost: a CI
+  // job must not read that as success.
+  errno = 0;
+  std::cout.flush();
+  if (!std::cout) {
+    const int error = errno;
+    return print_error(program_name(program, argc, argv),
+                       std::string("cannot write to standard output") +
+                           (error != 0 ? std::string(": ") + std::strerror(error) : ""));
+  }
+  return code;
 }
 
 } // namespace cli

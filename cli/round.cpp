@@ -13,6 +13,7 @@
 
 #include "catalogue/registry.hpp"
 #include "cli/exit_status.hpp"
+#include "support/text_file.hpp"
 
 namespace cli {
 
@@ -208,14 +209,19 @@ RoundConfig read_round_config(std::istream& in, const std::string& source) {
 
 int command_round(const RoundRequest& request) {
   std::optional<RoundConfig> config;
-  if (request.config == "-") {
-    config.emplace(read_round_config(std::cin, "-"));
-  } else {
-    std::ifstream file(request.config);
-    if (!file)
-      throw UsageError("cannot read the round config '" + request.config + "'");
-    config.emplace(read_round_config(file, request.config));
+  // A round configuration is a grid and counts: 16 MiB is far more than any, and a device,
+  // a directory or a binary file is refused before parsing (support/text_file.hpp).
+  constexpr std::size_t max_config_bytes = 16 << 20;
+  std::string text;
+  try {
+    text = request.config == "-"
+               ? support::read_text_stream(std::cin, "standard input", max_config_bytes)
+               : support::read_text_file(request.config, max_config_bytes);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("round config: " + std::string(e.what()));
   }
+  std::istringstream in(text);
+  config.emplace(read_round_config(in, support::printable(request.config)));
   const mc::RoundSystem& system = config->system;
 
   Outcome outcome;

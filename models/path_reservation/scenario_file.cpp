@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <charconv>
-#include <filesystem>
-#include <fstream>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
+
+#include "support/text_file.hpp"
 
 namespace path_reservation {
 
@@ -164,11 +164,10 @@ Scenario parse_scenario(std::istream& in, const std::string& source_name) {
 }
 
 Scenario read_scenario_file(const std::string& path) {
-  std::error_code error;
-  std::ifstream in(path);
-  if (!in || std::filesystem::is_directory(path, error))
-    throw std::invalid_argument(path + ": cannot open");
-  return parse_scenario(in, path);
+  // A scenario is a few lines: 1 MiB is far more than any, and a device or a binary file
+  // is refused before parsing (support/text_file.hpp).
+  std::istringstream in(support::read_text_file(path, 1 << 20));
+  return parse_scenario(in, support::printable(path));
 }
 
 } // namespace path_reservation
