@@ -37,12 +37,16 @@ PropertyResult check_transitivity(const Automaton& system, const StatePredicate&
       return r;
     }
   if (first.verdict == Verdict::violated || second.verdict == Verdict::violated) {
-    r.verdict = Verdict::holds;
-    r.message =
-        "vacuous: a premise of Lemma 3.4 fails (" +
-        (first.verdict == Verdict::violated ? "start -> " + l1_name + ": " + first.message
-                                            : l1_name + " -> " + l2_name + ": " + second.message) +
-        ")";
+    // Lemma 3.4 then says nothing, but the composed claim (start -> L2 through L1) is not
+    // shown either: the failing stage's verdict and its counterexample (issue 17).
+    const PropertyResult& failed = first.verdict == Verdict::violated ? first : second;
+    r.verdict = Verdict::violated;
+    r.trace = failed.trace;
+    r.trace_role = failed.trace_role;
+    r.trace_kind = failed.trace_kind;
+    r.message = "a stage fails, so Lemma 3.4 cannot compose them: " +
+                (&failed == &first ? "start -> " + l1_name : l1_name + " -> " + l2_name) + ": " +
+                failed.message;
     return r;
   }
   const std::uint64_t t1 = *first.worst_time, t2 = *second.worst_time;

@@ -61,8 +61,9 @@ std::string join(const std::vector<std::string>& names, const std::string& separ
 
 constexpr const char* exit_codes_help =
     "Exit codes: 0 every property holds (suite: every verdict as expected), 1 some property "
-    "is violated (suite: some verdict not as expected), 2 usage or input error, 3 some check "
-    "hit a limit (incomplete) and none is violated.";
+    "is violated (suite: some verdict other than expected), 2 usage or input error, 3 some "
+    "check hit a limit (incomplete) and none is violated (suite: the entries not as expected "
+    "are all incomplete).";
 
 // One line on stderr, "<program>: error: <message>"; the exit code of a usage error.
 int print_error(const std::string& program, const std::string& message) {
@@ -91,6 +92,12 @@ const CLI::Validator seconds(
     },
     "S>=0", "seconds");
 
+// A file name given with an option may not be empty (`--junit ""` would write nothing and
+// say nothing).
+const CLI::Validator non_empty_name(
+    [](const std::string& text) { return text.empty() ? std::string("an empty name") : ""; },
+    "FILE");
+
 struct Limits {
   std::uint64_t max_states = 0;
   double max_seconds = 0;
@@ -114,7 +121,8 @@ void add_run_options(CLI::App* command, RunSettings& settings, Limits& limits, s
                      std::string& store, bool with_trace) {
   command->add_flag("--json", settings.json, "print one JSON object on stdout");
   command->add_option("--junit", settings.junit_path, "also write a JUnit XML report to FILE")
-      ->type_name("FILE");
+      ->type_name("FILE")
+      ->check(non_empty_name);
   command->add_option("-j,--threads", settings.threads, "worker threads (default: all cores)")
       ->type_name("N")
       ->check(CLI::Range(1u, 4096u));
@@ -155,7 +163,8 @@ void add_run_options(CLI::App* command, RunSettings& settings, Limits& limits, s
     command
         ->add_option("--html", settings.html_path,
                      "also write the traces as one self-contained HTML page to FILE")
-        ->type_name("FILE");
+        ->type_name("FILE")
+        ->check(non_empty_name);
   }
 }
 

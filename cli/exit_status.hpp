@@ -9,7 +9,7 @@ namespace cli {
 
 enum ExitStatus : int {
   all_hold = 0,
-  some_violated = 1,   // (suite: some verdict differs from its expected verdict)
+  some_violated = 1,   // (suite: some definite verdict differs from its expected verdict)
   usage_error = 2,     // bad command line or input: unknown model, parameter, property...
   some_incomplete = 3, // a limit was hit and nothing was violated
 };

@@ -266,7 +266,10 @@ void add_simulate_options(CLI::App& command, SimulateRequest& request) {
       .add_option("--out", request.out,
                   "write simulation.csv, fig9.svg and fig8-<curve>-m<m>.svg into DIR "
                   "(created if missing); without it no file is written")
-      ->type_name("DIR");
+      ->type_name("DIR")
+      ->check(CLI::Validator(
+          [](const std::string& text) { return text.empty() ? std::string("an empty name") : ""; },
+          "DIR"));
   command.add_option("--m-from", request.m_from, "the smallest grid side m (default 10)")
       ->type_name("M")
       ->check(CLI::Range(1, max_side));

@@ -144,12 +144,18 @@ int command_suite(const catalogue::Catalogue& models, const RunSettings& setting
   }
 
   std::size_t as_expected = 0;
+  bool contradicted = false; // a definite verdict other than the expected one
   VerdictCounts counts;
   for (const auto& row : rows) {
     as_expected += row.as_expected();
+    contradicted = contradicted ||
+                   (!row.as_expected() && row.result().verdict != checker::Verdict::incomplete);
     counts.add(row.result().verdict);
   }
   const bool all_as_expected = as_expected == rows.size();
+  // Entries cut short by a limit (--max-states, --max-seconds) are not failures: exit 3,
+  // as for check, unless some entry contradicts its expected verdict.
+  const char* outcome = all_as_expected ? "OK" : contradicted ? "FAILED" : "INCOMPLETE";
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (settings.json)
@@ -158,15 +164,14 @@ int command_suite(const catalogue::Catalogue& models, const RunSettings& setting
     std::cout << fmt::format("\nsuite: {} checks ({} hold, {} violated, {} incomplete), {} as "
                              "expected, {} not as expected, {:.2f} s: {}\n",
                              rows.size(), counts.holds, counts.violated, counts.incomplete,
-                             as_expected, rows.size() - as_expected, seconds,
-                             all_as_expected ? "OK" : "FAILED");
+                             as_expected, rows.size() - as_expected, seconds, outcome);
   if (junit) {
     write_junit(*junit, junit_suites(rows));
     junit->close();
     if (!*junit)
       throw catalogue::UsageError("cannot write the report file '" + settings.junit_path + "'");
   }
-  return all_as_expected ? all_hold : some_violated;
+  return all_as_expected ? all_hold : contradicted ? some_violated : some_incomplete;
 }
 
 } // namespace cli

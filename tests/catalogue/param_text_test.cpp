@@ -81,7 +81,8 @@ TEST_CASE("resolve_params: a text parameter takes any text", "[models][registry]
   CHECK(catalogue::resolve_params(model, {}).at("file") == ParamValue::text("default.txt"));
   CHECK(catalogue::resolve_params(model, {"file=dir/a b.txt"}).at("file") ==
         ParamValue::text("dir/a b.txt"));
-  CHECK(catalogue::resolve_params(model, {"file="}).at("file") == ParamValue::text(""));
+  // An empty value is refused: the default is had by leaving the parameter out (issue 17).
+  CHECK_THROWS_AS(catalogue::resolve_params(model, {"file="}), catalogue::UsageError);
   CHECK(catalogue::resolve_params(model, {"file=a=b"}).at("file") == ParamValue::text("a=b"));
   CHECK(catalogue::resolve_params(model, {"file=7"}).at("file") == ParamValue::text("7"));
   CHECK(catalogue::resolve_params(model, {"file=a,b.txt", "N=4"}) ==

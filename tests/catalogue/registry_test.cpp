@@ -114,8 +114,9 @@ TEST_CASE("resolve_params: defaults and overrides", "[models][registry][params]"
   CHECK(catalogue::resolve_params(ring, {"N=3"}) == catalogue::ParamValues{{"N", 3}, {"K", 4}});
   CHECK(catalogue::resolve_params(ring, {"K=2", "N=7"}) ==
         catalogue::ParamValues{{"N", 7}, {"K", 2}});
-  CHECK(catalogue::resolve_params(ring, {"N=3", "N=4"}) ==
-        catalogue::ParamValues{{"N", 4}, {"K", 4}});
+  // Two values for one parameter are refused, not the last one kept (issue 17).
+  CHECK_THROWS_WITH(catalogue::resolve_params(ring, {"N=3", "N=4"}),
+                    "parameter N is given twice (N=3 and N=4)");
   // The ends of each range are allowed.
   CHECK(catalogue::resolve_params(ring, {"N=2", "K=64"}).at("K") == 64);
   const auto& fischer = catalogue::builtin_models().find("fischer");
@@ -146,7 +147,7 @@ TEST_CASE("resolve_params: bad settings are a UsageError with a clear message",
       CHECK(usage_error("token-ring", {"N=" + text}) ==
             "parameter N: '" + text + "' is not a whole number");
     CHECK(usage_error("token-ring", {"N=99999999999999999999"}) ==
-          "parameter N: '99999999999999999999' is not a whole number");
+          "parameter N = 99999999999999999999 is out of range 2..20");
   }
   SECTION("out of range") {
     CHECK(usage_error("token-ring", {"N=1"}) == "parameter N = 1 is out of range 2..20");

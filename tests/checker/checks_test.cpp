@@ -580,9 +580,10 @@ TEST_CASE("transitivity: holds, with t1, t2 and the direct time", "[checker][tra
   CHECK(r.message == "start -> x==0 in 6 <= t1 + t2 = 4 + 2 steps");
 }
 
-TEST_CASE("transitivity: vacuous when a premise fails", "[checker][transitivity]") {
+TEST_CASE("transitivity: a failing stage is the verdict", "[checker][transitivity]") {
   // x in 0..3 from anywhere: 3 <-> 2 for ever, 1 -> 0. L1 = x <= 1 is never reached from
-  // 2 or 3, so the first premise fails; the lemma then says nothing.
+  // 2 or 3, so the first premise fails; the lemma then says nothing, and the composed claim
+  // is violated with the stage's counterexample (a vacuous "holds" before issue 17).
   tioa::Automaton a("split");
   const auto x = a.integer("x", 0, 3, std::nullopt);
   a.internal("swap")
@@ -595,8 +596,11 @@ TEST_CASE("transitivity: vacuous when a premise fails", "[checker][transitivity]
   const PropertyResult r = check_transitivity(
       u, [=](const State& s) { return s[x] <= 1; }, "x<=1",
       [=](const State& s) { return s[x] == 0; }, "x==0", {});
-  CHECK(r.verdict == Verdict::holds);
-  CHECK(r.message.rfind("vacuous: a premise of Lemma 3.4 fails (start -> x<=1: ", 0) == 0);
+  CHECK(r.verdict == Verdict::violated);
+  CHECK(r.message.rfind("a stage fails, so Lemma 3.4 cannot compose them: start -> x<=1: ", 0) ==
+        0);
+  REQUIRE(r.trace);
+  CHECK(r.trace->loop_start); // the lasso that never reaches x <= 1
   CHECK(r.figures ==
         std::vector<std::pair<std::string, std::string>>{{"t1 (start -> x<=1)", "violated"},
                                                          {"t2 (x<=1 -> x==0)", "1"},
@@ -607,8 +611,9 @@ TEST_CASE("transitivity: vacuous when a premise fails", "[checker][transitivity]
     const PropertyResult s = check_transitivity(
         u, [](const State&) { return true; }, "true", [=](const State& st) { return st[x] == 0; },
         "x==0", {});
-    CHECK(s.verdict == Verdict::holds);
-    CHECK(s.message.rfind("vacuous: a premise of Lemma 3.4 fails (true -> x==0: ", 0) == 0);
+    CHECK(s.verdict == Verdict::violated);
+    CHECK(s.message.rfind("a stage fails, so Lemma 3.4 cannot compose them: true -> x==0: ", 0) ==
+          0);
   }
   SECTION("a limit gives incomplete") {
     ExploreOptions options;

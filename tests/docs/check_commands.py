@@ -27,7 +27,7 @@ import tempfile
 SECONDS = re.compile(r"seconds [0-9]+(\.[0-9]+)?")
 VERDICT = r"(?:holds|violated|incomplete)"
 SUITE_ROW = re.compile(rf"^(.* {VERDICT} +{VERDICT} .*?) +[0-9]+\.[0-9]{{3}}(   <- NOT AS EXPECTED)?$")
-SUITE_SUMMARY = re.compile(r"(not as expected), [0-9]+\.[0-9]+ s: (OK|FAILED)$")
+SUITE_SUMMARY = re.compile(r"(not as expected), [0-9]+\.[0-9]+ s: (OK|FAILED|INCOMPLETE)$")
 
 
 def normalise_line(line):

@@ -128,10 +128,12 @@ TEST_CASE("scenario file: every error is one line naming the file and the line",
       read_scenario_file(missing);
       FAIL("no error");
     } catch (const std::invalid_argument& e) {
-      CHECK(std::string(e.what()) == "no/such/scenario.txt: cannot open");
+      CHECK(std::string(e.what()) == "no/such/scenario.txt: No such file or directory");
     }
     CHECK_THROWS_WITH(read_scenario_file(std::filesystem::temp_directory_path().string()),
-                      std::filesystem::temp_directory_path().string() + ": cannot open");
+                      std::filesystem::temp_directory_path().string() +
+                          ": is a directory, not a file");
+    CHECK_THROWS_WITH(read_scenario_file("/dev/zero"), "/dev/zero: not a regular file");
   }
 }
 
