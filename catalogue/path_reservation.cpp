@@ -136,6 +136,10 @@ ModelDefinition path_reservation_definition() {
     };
     using checker::PropertyKind;
     ModelInstance m{protocol->system, {}, ""};
+    // Every robot done or halted: the protocol has nothing left to do (explore's deadlock
+    // check takes it for an end, issue 17).
+    m.ended = predicate(all_finished);
+    m.ended_name = "every robot done or halted by an exception";
     m.properties = {
         {"mutual-exclusion",
          "invariant: owned areas are disjoint (Property 2)",

@@ -60,6 +60,10 @@ struct ModelInstance {
   std::vector<checker::Property> properties;
   // What one tick is, for timed models ("" when untimed: time is counted in steps).
   std::string quantum;
+  // The states where the system has ended its work (every robot done): `explore`'s deadlock
+  // check counts a state with no action there as a proper end. Empty: no state is one.
+  tioa::StatePredicate ended = {};
+  std::string ended_name = "";
 };
 
 // One entry of the default suite: an instance, a property, and the verdict we expect.

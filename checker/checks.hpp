@@ -38,8 +38,12 @@ PropertyResult check_transitivity(const Automaton& system, const StatePredicate&
                                   const std::string& l1_name, const StatePredicate& l2,
                                   const std::string& l2_name, const ExploreOptions& options);
 
-// No reachable state where nothing can happen: no action and (when timed) no tick.
-PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& options);
+// No reachable state where nothing can happen: no action and (when timed) no tick. A stuck
+// state where `ended` holds (the system has finished its work, e.g. every robot done) is a
+// proper end, not a deadlock: counted in a note, never the verdict. Empty: none is.
+PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& options,
+                                 const StatePredicate& ended = {},
+                                 const std::string& ended_name = "");
 
 // check_invariant and check_no_deadlock run on either store (ExploreOptions::store); on the
 // fingerprint store a run that finds nothing is incomplete ("holds up to hash collisions").

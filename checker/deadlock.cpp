@@ -2,13 +2,15 @@
 // no tick) is possible. TIOA executions are expected to let time pass (seed 000 §3.1).
 
 #include <optional>
+#include <vector>
 
 #include "checker/checks.hpp"
 #include "checker/explorer.hpp"
 
 namespace checker {
 
-PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& options) {
+PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& options,
+                                 const StatePredicate& ended, const std::string& ended_name) {
   const tioa::SuccessorGenerator generator(system);
   std::optional<ZeroTimeReduction> reduction;
   if (options.por && generator.timed())
@@ -17,12 +19,30 @@ PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& 
       explore(generator, system.start(), options, hooks(), reduction ? &*reduction : nullptr);
   PropertyResult r = result_of("deadlock", ex, generator);
   const char* what = generator.timed() ? "time-lock" : "deadlock";
-  if (!ex.stuck.empty()) {
+  std::vector<StateId> stuck; // the stuck states that are not proper ends
+  for (const StateId id : ex.stuck) {
+    if (!ended) {
+      stuck = ex.stuck;
+      break;
+    }
+    // The fingerprint store keeps no states: the trace to it rebuilds the state.
+    const std::vector<Word> state =
+        ex.fingerprints()
+            ? trace_to(generator, ex, id).steps.back().state
+            : std::vector<Word>(ex.store.state(id), ex.store.state(id) + generator.words());
+    if (!ended(tioa::State(state.data(), 0)))
+      stuck.push_back(id);
+  }
+  if (stuck.size() < ex.stuck.size())
+    r.notes.push_back(std::to_string(ex.stuck.size() - stuck.size()) +
+                      " reachable states with no action are proper ends (" + ended_name +
+                      "), not " + what + "s");
+  if (!stuck.empty()) {
     r.verdict = Verdict::violated;
-    r.trace = trace_to(generator, ex, ex.stuck.front());
+    r.trace = trace_to(generator, ex, stuck.front());
     r.trace_role = "counterexample";
     r.trace_kind = what;
-    r.message = reachable_states(ex.stuck.size(), ex) + " with no action" +
+    r.message = reachable_states(stuck.size(), ex) + " with no action" +
                 (generator.timed() ? " and no tick" : "") + " (" + what + ")";
   } else if (!ex.complete()) {
     mark_incomplete(r, ex, std::string("no ") + what + " in the states covered");

@@ -76,7 +76,7 @@ PropertyResult check_legal_set(const Automaton& system, const StatePredicate& le
   }
   // Every member of L is enumerated, so the closure covers all of them (how many is known
   // when the enumeration finished).
-  r.coverage = {Starts::all, r.states, std::nullopt, "the legal set"};
+  r.coverage = {Starts::all, r.states, std::nullopt, "the legal set", ""};
   if (!bad_from && limit.empty())
     r.coverage.of = r.states;
   return r;

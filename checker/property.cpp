@@ -49,7 +49,7 @@ PropertyResult run_property(const Automaton& system, const Property& property,
                                 property.predicate_name, named);
     break;
   case PropertyKind::deadlock:
-    result = check_no_deadlock(system, named);
+    result = check_no_deadlock(system, named, property.predicate, property.predicate_name);
     break;
   case PropertyKind::custom:
     result = property.run(named);

@@ -17,7 +17,9 @@ struct Property {
   std::string name;
   std::string description;
   PropertyKind kind = PropertyKind::invariant;
-  StatePredicate predicate; // the invariant, or the legal set L (L2 for transitivity)
+  // The invariant, the legal set L (L2 for transitivity), or for a deadlock check the states
+  // that are proper ends (check_no_deadlock's `ended`; empty: none).
+  StatePredicate predicate;
   std::string predicate_name;
   StatePredicate first; // transitivity: the intermediate legal set L1
   std::string first_name;

@@ -70,7 +70,7 @@ PropertyResult result_of(const std::string& kind, const Exploration& ex,
   r.time_unit = generator.timed() ? "quanta" : "steps";
   // An exploration covers every state reachable from its start set; a check that explores
   // from a part of what its statement quantifies over says so itself.
-  r.coverage = {Starts::all, ex.start_states, ex.start_states, "the start states"};
+  r.coverage = {Starts::all, ex.start_states, ex.start_states, "the start states", ""};
   return r;
 }
 

@@ -102,6 +102,8 @@ int command_explore(const catalogue::Catalogue& models, const ModelRequest& requ
       from == "arbitrary" ? tioa::U(built.instance.system) : built.instance.system;
   checker::Property no_deadlock;
   no_deadlock.kind = checker::PropertyKind::deadlock;
+  no_deadlock.predicate = built.instance.ended;
+  no_deadlock.predicate_name = built.instance.ended_name;
   if (system.timed()) {
     no_deadlock.name = "no-timelock";
     no_deadlock.description = "no reachable state where neither an action nor a tick is possible";

@@ -96,6 +96,9 @@ std::optional<std::string> check_scenario(const Scenario& s, DiskEdge edge) {
       starts |= plane.bit(s.paths[r][0]);
       for (int k = 0; k < s.chunks(r); ++k) {
         const Cell from = s.paths[r][k], to = s.paths[r][k + 1];
+        // Before any bit of it is taken: a cell off the plane has no bit (issue 17, UBSan).
+        if (!plane.contains(to))
+          return robot_name(r) + "'s waypoint " + to_string(to) + " is outside the plane";
         const Zone zone = plane.zone(from, to); // throws when the chunk is not straight
         if ((zone.all() & ~plane.disk(from, s.range * s.range, edge)) != 0)
           return robot_name(r) + "'s chunk " + to_string(from) + "-" + to_string(to) +

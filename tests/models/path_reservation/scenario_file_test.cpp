@@ -147,13 +147,17 @@ TEST_CASE("scenario file: a scenario that check_scenario refuses gives its reaso
       {"plane 4 4\nrange 6\nrobot (0,0) (1,0)\nrobot (0,0) (0,1)\n",
        {"", "", 4, 4, 6, {{{0, 0}, {1, 0}}, {{0, 0}, {0, 1}}}}},
       {"plane 9 9\nrange 6\nrobot (0,0) (1,0)\n", {"", "", 9, 9, 6, {{{0, 0}, {1, 0}}}}},
-      {"plane 2 2\nrange 3\nrobot (0,0)\n", {"", "", 2, 2, 3, {{{0, 0}}}}}};
+      {"plane 2 2\nrange 3\nrobot (0,0)\n", {"", "", 2, 2, 3, {{{0, 0}}}}},
+      // A waypoint off the plane, far or negative (UBSan once saw the shift of its bit).
+      {"plane 4 4\nrange 6\nrobot (0,0) (0,9)\n", {"", "", 4, 4, 6, {{{0, 0}, {0, 9}}}}},
+      {"plane 4 4\nrange 6\nrobot (1,0) (-1,0)\n", {"", "", 4, 4, 6, {{{1, 0}, {-1, 0}}}}}};
   for (const auto& [text, scenario] : refused) {
     INFO(text);
     const auto reason = path_reservation::check_scenario(scenario);
     REQUIRE(reason);
     CHECK(parse_error(text) == "dir/test.txt: " + *reason);
   }
+  CHECK(parse_error(refused[5].first) == "dir/test.txt: R1's waypoint (0,9) is outside the plane");
   CHECK_THAT(parse_error(refused[0].first),
              Catch::StartsWith("dir/test.txt: R1's chunk (0,0)-(3,0) leaves ") &&
                  Catch::EndsWith("(Definition 4)"));
