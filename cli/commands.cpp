@@ -117,9 +117,19 @@ int command_explore(const catalogue::Catalogue& models, const ModelRequest& requ
   ModelRun run = start_run(built, system);
   run.from = from;
   const checker::ExploreOptions options = explore_options(settings);
-  for (const checker::Property* property : properties)
-    run.results.push_back(checker::run_property(system, *property, options));
-  run.results.push_back(checker::run_property(system, no_deadlock, options));
+  try {
+    for (const checker::Property* property : properties)
+      run.results.push_back(checker::run_property(system, *property, options));
+    run.results.push_back(checker::run_property(system, no_deadlock, options));
+  } catch (const tioa::ModelError& e) {
+    // Some models are defined only on the states they reach (mc-round's counts must add
+    // up): a step from an arbitrary valuation leaves their domains. Say which, in one line.
+    if (from != "arbitrary")
+      throw;
+    throw catalogue::UsageError("model '" + request.model +
+                                "' is not defined on arbitrary states (a step from one gives: " +
+                                e.what() + "); explore it with --from start");
+  }
   return report(run, built.definition->picture, settings, junit, html);
 }
 

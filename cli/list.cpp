@@ -40,7 +40,7 @@ Json list_json(const catalogue::Catalogue& catalogue) {
                           {"params", std::move(params)},
                           {"properties", std::move(properties)}});
   }
-  return Json{{"models", std::move(models)}};
+  return Json{{"version", tool_version()}, {"models", std::move(models)}};
 }
 
 void print_list_text(const catalogue::Catalogue& catalogue) {

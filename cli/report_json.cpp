@@ -100,8 +100,6 @@ Json property_json(const ModelRun& run, const checker::PropertyResult& r, bool w
     out["worst_time"] = *r.worst_time;
   if (timing_kind && r.last_time_outside)
     out["last_time_outside"] = *r.last_time_outside;
-  if (!run.quantum.empty())
-    out["time_note"] = time_note(run.quantum);
   out["notes"] = r.notes;
   Json figures = Json::object();
   for (const auto& [name, value] : r.figures)
@@ -127,15 +125,22 @@ Json params_json(const OrderedParams& params) {
   return out;
 }
 
+const char* tool_version() {
+  return TIOA_CHECK_VERSION;
+}
+
 Json run_json(const ModelRun& run, bool with_trace) {
   Json out;
+  out["version"] = tool_version();
   out["model"] = run.model;
   out["params"] = params_json(run.params);
   out["variant"] = run.variant.empty() ? Json(nullptr) : Json(run.variant);
   if (!run.from.empty())
     out["from"] = run.from;
-  if (!run.quantum.empty())
+  if (!run.quantum.empty()) {
     out["quantum"] = run.quantum;
+    out["time_note"] = time_note(run.quantum); // once per report: it is the same for each
+  }
   Json properties = Json::array();
   for (const auto& r : run.results)
     properties.push_back(property_json(run, r, with_trace));

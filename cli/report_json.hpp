@@ -23,6 +23,9 @@ Json param_json(const catalogue::ParamValue& value);
 Json params_json(const OrderedParams& params);
 
 // {"model", "params", ("from",) "properties": [...]}
+// The version of tioa-check that wrote a report (the JSON field `version`).
+const char* tool_version();
+
 Json run_json(const ModelRun& run, bool with_trace);
 
 } // namespace cli

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "cli/report_text.hpp"
+#include "cli/time_note.hpp"
 
 namespace cli {
 
@@ -78,6 +79,8 @@ JunitSuite junit_suite(const ModelRun& run, TraceMode trace) {
     suite.properties.emplace_back("variant", run.variant);
   if (!run.from.empty())
     suite.properties.emplace_back("from", run.from);
+  if (!run.quantum.empty())
+    suite.properties.emplace_back("time_note", time_note(run.quantum));
   for (const auto& r : run.results) {
     JunitCase c;
     c.name = r.name;

@@ -127,8 +127,6 @@ void print_property_block(std::ostream& out, const ModelRun& run, const checker:
     out << "   " << name << ": " << value << '\n';
   for (const auto& note : r.notes)
     print_wrapped(out, "note: " + note, "   ", 90);
-  if (!run.quantum.empty())
-    print_wrapped(out, "time: " + time_note(run.quantum), "   ", 90);
   if (r.trace && trace != TraceMode::none) {
     out << "   " << r.trace_role << " (" << r.trace_kind << "), " << r.trace->length()
         << (r.trace->length() == 1 ? " step" : " steps");
@@ -160,6 +158,10 @@ void print_text_report(std::ostream& out, const ModelRun& run, TraceMode trace) 
     print_property_block(out, run, r, trace);
     out << '\n';
     counts.add(r.verdict);
+  }
+  if (!run.quantum.empty()) { // once per report: it is the same for every property
+    print_wrapped(out, "time: " + time_note(run.quantum), "", 90);
+    out << '\n';
   }
   out << fmt::format("summary: {} {}: {} hold, {} violated, {} incomplete\n", run.results.size(),
                      run.results.size() == 1 ? "property" : "properties", counts.holds,

@@ -13,6 +13,7 @@
 
 #include "catalogue/registry.hpp"
 #include "cli/exit_status.hpp"
+#include "cli/report_json.hpp"
 #include "support/text_file.hpp"
 
 namespace cli {
@@ -112,7 +113,7 @@ void print_round_json(const mc::GridTiling& grid, const Outcome& outcome) {
   auto number = [](const std::optional<std::size_t>& value) {
     return value ? std::to_string(*value) : std::string("null");
   };
-  std::cout << "{\n  \"rounds\": [";
+  std::cout << "{\n  \"version\": \"" << tool_version() << "\",\n  \"rounds\": [";
   for (std::size_t t = 0; t < outcome.rounds.size(); ++t)
     std::cout << (t == 0 ? "\n    " : ",\n    ") << matrix_json(grid, outcome.rounds[t]).dump();
   std::cout << "\n  ],\n  \"T_out\": " << number(outcome.t_out)

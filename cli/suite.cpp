@@ -15,6 +15,7 @@
 #include "cli/output.hpp"
 #include "cli/report_junit.hpp"
 #include "cli/report_text.hpp"
+#include "cli/time_note.hpp"
 
 namespace cli {
 
@@ -87,12 +88,17 @@ std::vector<JunitSuite> junit_suites(const std::vector<SuiteRow>& rows) {
 Json suite_json(const std::vector<SuiteRow>& rows, bool all_as_expected) {
   Json entries = Json::array();
   for (const auto& row : rows)
-    entries.push_back(Json{{"model", row.run.model},
-                           {"params", params_json(row.run.params)},
-                           {"property", row.entry->property},
-                           {"expected", checker::to_string(row.entry->expected)},
-                           {"result", property_json(row.run, row.result(), true)}});
-  return Json{{"suite", std::move(entries)}, {"all_as_expected", all_as_expected}};
+    entries.push_back(Json{
+        {"model", row.run.model},
+        {"params", params_json(row.run.params)},
+        {"variant", row.run.variant.empty() ? Json(nullptr) : Json(row.run.variant)},
+        {"time_note", row.run.quantum.empty() ? Json(nullptr) : Json(time_note(row.run.quantum))},
+        {"property", row.entry->property},
+        {"expected", checker::to_string(row.entry->expected)},
+        {"result", property_json(row.run, row.result(), true)}});
+  return Json{{"version", tool_version()},
+              {"suite", std::move(entries)},
+              {"all_as_expected", all_as_expected}};
 }
 
 } // namespace
