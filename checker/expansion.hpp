@@ -22,6 +22,7 @@
 #include "checker/growth_gate.hpp"
 #include "checker/hooks.hpp"
 #include "checker/insertion.hpp"
+#include "checker/interrupt.hpp"
 #include "checker/level_states.hpp"
 #include "checker/memory_budget.hpp"
 #include "checker/progress.hpp"
@@ -202,6 +203,8 @@ bool Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
       if (((id - begin) & 1023) == 1023) {
         if (calling_thread) // (chunks are taken in order: roughly what is left)
           level.progress.update(level.store.size(), level.end - id, level.depth);
+        if (interrupted()) // stop_after_level() names the reason
+          return false;
         if (level.max_seconds > 0) {
           if (level.signals.out_of_time.load(std::memory_order_relaxed))
             return false;

@@ -12,6 +12,8 @@ const char* describe(StopReason reason) {
     return "state limit reached";
   case StopReason::time_limit:
     return "time limit reached";
+  case StopReason::interrupted:
+    return "interrupted";
   default:
     return "memory limit reached";
   }

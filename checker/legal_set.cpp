@@ -1,6 +1,7 @@
 #include <vector>
 
 #include "checker/checks.hpp"
+#include "checker/interrupt.hpp"
 #include "checker/progress.hpp"
 #include "tioa/start_set.hpp"
 
@@ -44,7 +45,9 @@ PropertyResult check_legal_set(const Automaton& system, const StatePredicate& le
         throw StopEnumeration{};
       if ((r.states & 0xfff) == 0) {
         progress.update(r.states, 0, 0);
-        if (options.limits.max_seconds > 0 && progress.elapsed() > options.limits.max_seconds)
+        if (interrupted())
+          limit = "interrupted";
+        else if (options.limits.max_seconds > 0 && progress.elapsed() > options.limits.max_seconds)
           limit = "time limit reached";
       }
       if (!limit.empty())

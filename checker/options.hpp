@@ -32,7 +32,8 @@ struct ExploreOptions {
   std::string task;      // shown in the progress line
 };
 
-enum class StopReason { finished, found, state_limit, time_limit, memory_limit };
+// interrupted: a stop was requested from outside (checker/interrupt.hpp).
+enum class StopReason { finished, found, state_limit, time_limit, memory_limit, interrupted };
 
 const char* describe(StopReason reason);
 

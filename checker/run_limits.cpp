@@ -4,6 +4,8 @@ namespace checker {
 
 std::optional<StopReason> time_or_memory_exceeded(const Limits& limits, const Progress& progress,
                                                   const MemoryBudget& budget) {
+  if (interrupted())
+    return StopReason::interrupted;
   if (limits.max_seconds > 0 && progress.elapsed() > limits.max_seconds)
     return StopReason::time_limit;
   if (budget.exceeded())
@@ -14,6 +16,8 @@ std::optional<StopReason> time_or_memory_exceeded(const Limits& limits, const Pr
 std::optional<StopReason> stop_after_level(std::optional<StopReason> ended,
                                            const LevelSignals& signals, const Limits& limits,
                                            const Progress& progress, const MemoryBudget& budget) {
+  if (interrupted())
+    return StopReason::interrupted;
   if (signals.out_of_time)
     return StopReason::time_limit;
   if (signals.out_of_memory)

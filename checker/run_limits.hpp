@@ -7,6 +7,7 @@
 #include <atomic>
 #include <optional>
 
+#include "checker/interrupt.hpp"
 #include "checker/memory_budget.hpp"
 #include "checker/options.hpp"
 #include "checker/progress.hpp"
@@ -20,7 +21,7 @@ struct LevelSignals {
   std::atomic<bool> state_limit{false}; // a new state met the state limit
 };
 
-// The time limit, then the memory held.
+// A stop requested from outside, the time limit, then the memory held.
 std::optional<StopReason> time_or_memory_exceeded(const Limits& limits, const Progress& progress,
                                                   const MemoryBudget& budget);
 

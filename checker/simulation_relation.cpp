@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "checker/explorer.hpp"
+#include "checker/interrupt.hpp"
 
 namespace checker {
 
@@ -120,6 +121,10 @@ SimulationSearch search_simulation(const tioa::SuccessorGenerator& gx,
   for (StateId id = 0; id < pairs.store.size() && !out.violation; ++id) {
     if (limits.max_states != 0 && pairs.store.size() >= limits.max_states) {
       out.stop = StopReason::state_limit;
+      break;
+    }
+    if (interrupted()) {
+      out.stop = StopReason::interrupted;
       break;
     }
     if (limits.max_seconds > 0 &&

@@ -1,5 +1,6 @@
 #include "cli/app.hpp"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -15,6 +16,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "checker/interrupt.hpp"
 #include "cli/commands.hpp"
 #include "cli/exit_status.hpp"
 #include "support/text.hpp"
@@ -276,9 +278,26 @@ int run_command(int argc, char** argv, const catalogue::Catalogue& models, const
   }
 }
 
+// SIGINT and SIGTERM ask the run to stop (checker/interrupt.hpp): the property running
+// reports what it covered, as incomplete, and the reports are written. The handler is reset
+// by its first signal, so that a second one ends the process at once.
+extern "C" void request_stop(int) {
+  checker::stop_requested().store(true, std::memory_order_relaxed);
+}
+
+void install_stop_handlers() {
+  struct sigaction action {};
+  action.sa_handler = request_stop;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESETHAND;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
 } // namespace
 
 int run(int argc, char** argv, const catalogue::Catalogue& models, const Program& program) {
+  install_stop_handlers();
   const int code = run_command(argc, argv, models, program);
   // A report that did not reach standard output (a full disk, a closed pipe) is lost: a CI
   // job must not read that as success.

@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "checker/interrupt.hpp"
 #include "cli/exit_status.hpp"
 #include "cli/model_run.hpp"
 #include "cli/output.hpp"
@@ -57,7 +58,23 @@ int report(const ModelRun& run, const catalogue::Picture& picture, const RunSett
     if (!*html)
       throw catalogue::UsageError("cannot write the HTML file '" + settings.html_path + "'");
   }
-  return exit_status(run.results);
+  return run.interrupted ? some_incomplete : exit_status(run.results);
+}
+
+// Runs the properties in order until a stop is requested (SIGINT, SIGTERM): the property
+// that was running when it came reports what it covered, as incomplete; the rest do not run.
+void run_properties(ModelRun& run, const tioa::Automaton& system,
+                    const std::vector<const checker::Property*>& properties,
+                    const checker::ExploreOptions& options) {
+  for (std::size_t i = 0; i < properties.size(); ++i) {
+    run.results.push_back(checker::run_property(system, *properties[i], options));
+    if (checker::interrupted()) {
+      run.interrupted = true;
+      for (std::size_t later = i + 1; later < properties.size(); ++later)
+        run.not_run.push_back(properties[later]->name);
+      return;
+    }
+  }
 }
 
 } // namespace
@@ -77,9 +94,7 @@ int command_check(const catalogue::Catalogue& models, const ModelRequest& reques
   auto junit = open_report_file(settings.junit_path);
   auto html = open_report_file(settings.html_path);
   ModelRun run = start_run(built, built.instance.system);
-  const checker::ExploreOptions options = explore_options(settings);
-  for (const checker::Property* property : properties)
-    run.results.push_back(checker::run_property(built.instance.system, *property, options));
+  run_properties(run, built.instance.system, properties, explore_options(settings));
   return report(run, built.definition->picture, settings, junit, html);
 }
 
@@ -118,9 +133,9 @@ int command_explore(const catalogue::Catalogue& models, const ModelRequest& requ
   run.from = from;
   const checker::ExploreOptions options = explore_options(settings);
   try {
-    for (const checker::Property* property : properties)
-      run.results.push_back(checker::run_property(system, *property, options));
-    run.results.push_back(checker::run_property(system, no_deadlock, options));
+    std::vector<const checker::Property*> all = properties;
+    all.push_back(&no_deadlock);
+    run_properties(run, system, all, options);
   } catch (const tioa::ModelError& e) {
     // Some models are defined only on the states they reach (mc-round's counts must add
     // up): a step from an arbitrary valuation leaves their domains. Say which, in one line.

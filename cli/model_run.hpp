@@ -27,6 +27,10 @@ struct ModelRun {
   std::string from;    // explore: "arbitrary" or "start"; empty otherwise
   tioa::StateLayout layout;
   std::vector<checker::PropertyResult> results;
+  // A stop was requested (SIGINT, SIGTERM) while the last result ran: it is incomplete, and
+  // the properties named in not_run were not run.
+  bool interrupted = false;
+  std::vector<std::string> not_run;
 };
 
 OrderedParams ordered_params(const catalogue::ModelDefinition& model,

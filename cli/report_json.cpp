@@ -145,6 +145,10 @@ Json run_json(const ModelRun& run, bool with_trace) {
   for (const auto& r : run.results)
     properties.push_back(property_json(run, r, with_trace));
   out["properties"] = std::move(properties);
+  if (run.interrupted) {
+    out["interrupted"] = true;
+    out["not_run"] = run.not_run;
+  }
   return out;
 }
 

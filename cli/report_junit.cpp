@@ -96,6 +96,13 @@ JunitSuite junit_suite(const ModelRun& run, TraceMode trace) {
     }
     suite.cases.push_back(std::move(c));
   }
+  for (const std::string& name : run.not_run) {
+    JunitCase c;
+    c.name = name;
+    c.outcome = JunitCase::Outcome::skipped;
+    c.message = "not run: the run was interrupted (SIGINT or SIGTERM)";
+    suite.cases.push_back(std::move(c));
+  }
   return suite;
 }
 

@@ -11,6 +11,7 @@
 #include "cli/exit_status.hpp"
 #include "cli/report_json.hpp"
 #include "cli/time_note.hpp"
+#include "support/text.hpp"
 
 namespace cli {
 
@@ -163,6 +164,10 @@ void print_text_report(std::ostream& out, const ModelRun& run, TraceMode trace) 
     print_wrapped(out, "time: " + time_note(run.quantum), "", 90);
     out << '\n';
   }
+  if (run.interrupted)
+    out << "interrupted: the run was stopped (SIGINT or SIGTERM)"
+        << (run.not_run.empty() ? std::string("") : "; not run: " + support::join(run.not_run))
+        << "\n";
   out << fmt::format("summary: {} {}: {} hold, {} violated, {} incomplete\n", run.results.size(),
                      run.results.size() == 1 ? "property" : "properties", counts.holds,
                      counts.violated, counts.incomplete);

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "checker/interrupt.hpp"
 #include "cli/commands.hpp"
 #include "cli/exit_status.hpp"
 #include "cli/model_run.hpp"
@@ -147,7 +148,16 @@ int command_suite(const catalogue::Catalogue& models, const RunSettings& setting
     row.run.results.push_back(checker::run_property(instance.system, *properties.front(), options));
     if (!settings.json)
       print_row(columns, row);
+    if (checker::interrupted())
+      break;
   }
+  // A stop requested (SIGINT, SIGTERM): the entries not run are left out of every report.
+  const bool interrupted = checker::interrupted();
+  const std::size_t not_run = static_cast<std::size_t>(std::count_if(
+      rows.begin(), rows.end(), [](const SuiteRow& r) { return r.run.results.empty(); }));
+  rows.erase(std::remove_if(rows.begin(), rows.end(),
+                            [](const SuiteRow& r) { return r.run.results.empty(); }),
+             rows.end());
 
   std::size_t as_expected = 0;
   bool contradicted = false; // a definite verdict other than the expected one
@@ -161,23 +171,45 @@ int command_suite(const catalogue::Catalogue& models, const RunSettings& setting
   const bool all_as_expected = as_expected == rows.size();
   // Entries cut short by a limit (--max-states, --max-seconds) are not failures: exit 3,
   // as for check, unless some entry contradicts its expected verdict.
-  const char* outcome = all_as_expected ? "OK" : contradicted ? "FAILED" : "INCOMPLETE";
+  const char* outcome = contradicted      ? "FAILED"
+                        : interrupted     ? "INTERRUPTED"
+                        : all_as_expected ? "OK"
+                                          : "INCOMPLETE";
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  if (settings.json)
-    print_json(suite_json(rows, all_as_expected));
-  else
+  if (settings.json) {
+    Json json = suite_json(rows, all_as_expected);
+    if (interrupted) {
+      json["interrupted"] = true;
+      json["not_run"] = not_run;
+    }
+    print_json(json);
+  } else {
+    if (interrupted)
+      std::cout << "\ninterrupted: the suite was stopped (SIGINT or SIGTERM); " << not_run
+                << " entries not run";
     std::cout << fmt::format("\nsuite: {} checks ({} hold, {} violated, {} incomplete), {} as "
                              "expected, {} not as expected, {:.2f} s: {}\n",
                              rows.size(), counts.holds, counts.violated, counts.incomplete,
                              as_expected, rows.size() - as_expected, seconds, outcome);
+  }
   if (junit) {
-    write_junit(*junit, junit_suites(rows));
+    std::vector<JunitSuite> suites = junit_suites(rows);
+    if (interrupted) { // one skipped case says so, where a CI page shows it
+      JunitCase c;
+      c.name = std::to_string(not_run) + " entries not run";
+      c.outcome = JunitCase::Outcome::skipped;
+      c.message = "the suite was interrupted (SIGINT or SIGTERM)";
+      suites.push_back({"interrupted", {}, {std::move(c)}});
+    }
+    write_junit(*junit, suites);
     junit->close();
     if (!*junit)
       throw catalogue::UsageError("cannot write the report file '" + settings.junit_path + "'");
   }
-  return all_as_expected ? all_hold : contradicted ? some_violated : some_incomplete;
+  if (contradicted)
+    return some_violated;
+  return interrupted || !all_as_expected ? some_incomplete : all_hold;
 }
 
 } // namespace cli

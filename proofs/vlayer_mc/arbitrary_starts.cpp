@@ -66,7 +66,7 @@ EnvironmentStates environment_states(const tioa::Automaton& env, std::uint64_t l
 
 UStarts u_starts(const VlConfig& c, const ArbitraryStarts& a,
                  const checker::ExploreOptions& options) {
-  UStarts u{vlayer(c, after_t0), {}, false, 0, 0, ""};
+  UStarts u{vlayer(c, after_t0), {}, false, 0, 0, "", {}};
   const tioa::Automaton env = environment(c, after_t0);
   const EnvironmentStates reach = environment_states(env, a.environment_limit, a, c.delta, options);
   u.environment_states = reach.states.size();
