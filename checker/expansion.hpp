@@ -47,9 +47,9 @@ struct Level {
   StateId begin, end;       // the frontier: ids begin.. end - 1
   std::uint64_t max_states; // 0: no limit
   std::uint32_t depth;
-  std::size_t workers; // expanding this level
-  double max_seconds;  // 0: no time limit
-  Progress& progress;  // drawn by the first worker only
+  std::size_t workers;  // expanding this level
+  const Limits& limits; // the time limit (the others are checked elsewhere)
+  Progress& progress;   // drawn by the first worker only
   LevelSignals& signals;
   const ZeroTimeReduction* reduction; // null: every successor
   LevelStates* states; // the fingerprint store's two levels (nullptr: the exact store)
@@ -205,10 +205,10 @@ bool Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
           level.progress.update(level.store.size(), level.end - id, level.depth);
         if (interrupted()) // stop_after_level() names the reason
           return false;
-        if (level.max_seconds > 0) {
+        if (level.limits.max_seconds > 0 || level.limits.deadline) {
           if (level.signals.out_of_time.load(std::memory_order_relaxed))
             return false;
-          if (level.progress.elapsed() > level.max_seconds) {
+          if (level.limits.out_of_time(level.progress.elapsed())) {
             level.signals.out_of_time = true;
             return false;
           }

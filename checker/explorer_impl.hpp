@@ -118,21 +118,9 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
         break;
       }
       GrowthGate gate(used, grow_store);
-      const Level level{generator,
-                        ex.store,
-                        discovery,
-                        ex.parent,
-                        gate,
-                        begin,
-                        end,
-                        limits.max_states,
-                        ex.depth,
-                        used,
-                        limits.max_seconds,
-                        progress,
-                        signals,
-                        reduction,
-                        states};
+      const Level level{generator, ex.store, discovery,         ex.parent, gate,
+                        begin,     end,      limits.max_states, ex.depth,  used,
+                        limits,    progress, signals,           reduction, states};
       const std::span<Worker> active(workers.data(), used);
       expand_level(active, hooks, level, budget);
       if (signals.state_limit && used > 1 && !signals.out_of_time && !signals.out_of_memory) {

@@ -47,7 +47,7 @@ PropertyResult check_legal_set(const Automaton& system, const StatePredicate& le
         progress.update(r.states, 0, 0);
         if (interrupted())
           limit = "interrupted";
-        else if (options.limits.max_seconds > 0 && progress.elapsed() > options.limits.max_seconds)
+        else if (options.limits.out_of_time(progress.elapsed()))
           limit = "time limit reached";
       }
       if (!limit.empty())

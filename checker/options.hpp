@@ -2,7 +2,9 @@
 // How far and how a check may go. Zero means "no limit". A limit that is hit ends the
 // run with the verdict incomplete, never holds.
 
+#include <chrono>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace checker {
@@ -11,6 +13,16 @@ struct Limits {
   std::uint64_t max_states = 0;
   double max_seconds = 0;
   std::uint64_t max_memory_bytes = 0;
+  // When the time of the whole property (or suite) is up: run_property sets it from
+  // max_seconds, so that a property made of several explorations spends max_seconds in
+  // all, not in each (issue 17). None: max_seconds bounds each exploration alone.
+  std::optional<std::chrono::steady_clock::time_point> deadline;
+
+  // Whether time is up, `elapsed` seconds into an exploration.
+  bool out_of_time(double elapsed) const {
+    return (max_seconds > 0 && elapsed > max_seconds) ||
+           (deadline && std::chrono::steady_clock::now() > *deadline);
+  }
 };
 
 // How the visited states are held. `exact`: every state in full (state_store.hpp).

@@ -33,6 +33,12 @@ PropertyResult run_property(const Automaton& system, const Property& property,
                                 ") cannot run on the fingerprint store: use the exact store");
   ExploreOptions named = options;
   named.task = property.name;
+  // --max-seconds is a budget for the whole property, however many explorations it runs;
+  // a deadline set by the caller (a suite's) stays.
+  if (named.limits.max_seconds > 0 && !named.limits.deadline)
+    named.limits.deadline = std::chrono::steady_clock::now() +
+                            std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                std::chrono::duration<double>(named.limits.max_seconds));
   PropertyResult result;
   switch (property.kind) {
   case PropertyKind::invariant:

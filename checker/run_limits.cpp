@@ -6,7 +6,7 @@ std::optional<StopReason> time_or_memory_exceeded(const Limits& limits, const Pr
                                                   const MemoryBudget& budget) {
   if (interrupted())
     return StopReason::interrupted;
-  if (limits.max_seconds > 0 && progress.elapsed() > limits.max_seconds)
+  if (limits.out_of_time(progress.elapsed()))
     return StopReason::time_limit;
   if (budget.exceeded())
     return StopReason::memory_limit;

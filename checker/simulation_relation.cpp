@@ -127,9 +127,7 @@ SimulationSearch search_simulation(const tioa::SuccessorGenerator& gx,
       out.stop = StopReason::interrupted;
       break;
     }
-    if (limits.max_seconds > 0 &&
-        std::chrono::duration<double>(Clock::now() - options.started).count() >
-            limits.max_seconds) {
+    if (limits.out_of_time(std::chrono::duration<double>(Clock::now() - options.started).count())) {
       out.stop = StopReason::time_limit;
       break;
     }

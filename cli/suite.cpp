@@ -133,7 +133,13 @@ int command_suite(const catalogue::Catalogue& models, const RunSettings& setting
 
   if (!settings.json)
     print_header(columns);
-  const checker::ExploreOptions options = explore_options(settings);
+  checker::ExploreOptions options = explore_options(settings);
+  // --max-seconds bounds the whole suite: each entry stops at the suite's deadline, and
+  // the entries after it are not run.
+  if (options.limits.max_seconds > 0)
+    options.limits.deadline =
+        started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                      std::chrono::duration<double>(options.limits.max_seconds));
   std::map<std::pair<std::string, catalogue::ParamValues>, catalogue::ModelInstance> instances;
   for (auto& row : rows) {
     auto key = std::make_pair(row.definition->name, row.values);
@@ -148,16 +154,21 @@ int command_suite(const catalogue::Catalogue& models, const RunSettings& setting
     row.run.results.push_back(checker::run_property(instance.system, *properties.front(), options));
     if (!settings.json)
       print_row(columns, row);
-    if (checker::interrupted())
+    if (checker::interrupted() ||
+        (options.limits.deadline && std::chrono::steady_clock::now() > *options.limits.deadline))
       break;
   }
-  // A stop requested (SIGINT, SIGTERM): the entries not run are left out of every report.
-  const bool interrupted = checker::interrupted();
+  // A stop requested (SIGINT, SIGTERM) or the suite's time up: the entries not run are
+  // left out of every report, and said to be.
   const std::size_t not_run = static_cast<std::size_t>(std::count_if(
       rows.begin(), rows.end(), [](const SuiteRow& r) { return r.run.results.empty(); }));
   rows.erase(std::remove_if(rows.begin(), rows.end(),
                             [](const SuiteRow& r) { return r.run.results.empty(); }),
              rows.end());
+  const bool interrupted = checker::interrupted();
+  const std::string stopped = interrupted   ? "interrupted (SIGINT or SIGTERM)"
+                              : not_run > 0 ? "stopped at its time limit (--max-seconds)"
+                                            : "";
 
   std::size_t as_expected = 0;
   bool contradicted = false; // a definite verdict other than the expected one
@@ -171,23 +182,24 @@ int command_suite(const catalogue::Catalogue& models, const RunSettings& setting
   const bool all_as_expected = as_expected == rows.size();
   // Entries cut short by a limit (--max-states, --max-seconds) are not failures: exit 3,
   // as for check, unless some entry contradicts its expected verdict.
-  const char* outcome = contradicted      ? "FAILED"
-                        : interrupted     ? "INTERRUPTED"
-                        : all_as_expected ? "OK"
-                                          : "INCOMPLETE";
+  const char* outcome = contradicted       ? "FAILED"
+                        : interrupted      ? "INTERRUPTED"
+                        : !stopped.empty() ? "INCOMPLETE"
+                        : all_as_expected  ? "OK"
+                                           : "INCOMPLETE";
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (settings.json) {
     Json json = suite_json(rows, all_as_expected);
-    if (interrupted) {
-      json["interrupted"] = true;
+    if (!stopped.empty()) {
+      json["interrupted"] = interrupted;
+      json["stopped"] = stopped;
       json["not_run"] = not_run;
     }
     print_json(json);
   } else {
-    if (interrupted)
-      std::cout << "\ninterrupted: the suite was stopped (SIGINT or SIGTERM); " << not_run
-                << " entries not run";
+    if (!stopped.empty())
+      std::cout << "\nthe suite was " << stopped << "; " << not_run << " entries not run";
     std::cout << fmt::format("\nsuite: {} checks ({} hold, {} violated, {} incomplete), {} as "
                              "expected, {} not as expected, {:.2f} s: {}\n",
                              rows.size(), counts.holds, counts.violated, counts.incomplete,
@@ -195,12 +207,12 @@ int command_suite(const catalogue::Catalogue& models, const RunSettings& setting
   }
   if (junit) {
     std::vector<JunitSuite> suites = junit_suites(rows);
-    if (interrupted) { // one skipped case says so, where a CI page shows it
+    if (!stopped.empty()) { // one skipped case says so, where a CI page shows it
       JunitCase c;
       c.name = std::to_string(not_run) + " entries not run";
       c.outcome = JunitCase::Outcome::skipped;
-      c.message = "the suite was interrupted (SIGINT or SIGTERM)";
-      suites.push_back({"interrupted", {}, {std::move(c)}});
+      c.message = "the suite was " + stopped;
+      suites.push_back({interrupted ? "interrupted" : "stopped", {}, {std::move(c)}});
     }
     write_junit(*junit, suites);
     junit->close();
@@ -209,7 +221,7 @@ int command_suite(const catalogue::Catalogue& models, const RunSettings& setting
   }
   if (contradicted)
     return some_violated;
-  return interrupted || !all_as_expected ? some_incomplete : all_hold;
+  return !stopped.empty() || !all_as_expected ? some_incomplete : all_hold;
 }
 
 } // namespace cli

@@ -717,3 +717,27 @@ TEST_CASE("run_property: holds only on all the start states a statement quantifi
   };
   CHECK(run_property(ring.system, broken, {}).verdict == Verdict::violated);
 }
+
+// Issue 17: --max-seconds is a budget for the whole property. A property made of several
+// explorations stops them all at one deadline: once it has passed, the next exploration
+// stops at its first check instead of spending max_seconds of its own.
+TEST_CASE("run_property: the time limit is one deadline for all of a property's explorations",
+          "[checker][property][limits]") {
+  const auto big = fischer::build(8, 1, 2);
+  std::vector<PropertyResult> parts;
+  const Property two_searches{
+      "two", "", PropertyKind::custom, {}, "", {}, "", [&](const ExploreOptions& o) {
+        for (int i = 0; i < 2; ++i)
+          parts.push_back(check_no_deadlock(big.system, o));
+        return parts.back();
+      }};
+  ExploreOptions options;
+  options.limits.max_seconds = 0.05;
+  const PropertyResult r = run_property(big.system, two_searches, options);
+  REQUIRE(parts.size() == 2);
+  CHECK(parts[0].verdict == Verdict::incomplete);
+  CHECK_THAT(parts[0].message, Catch::StartsWith("time limit reached"));
+  CHECK(r.verdict == Verdict::incomplete);
+  // The second search met the deadline at its first check: far fewer states than the first.
+  CHECK(parts[1].states * 4 < parts[0].states);
+}

@@ -63,12 +63,13 @@ struct Setup {
   }
   Level level(GrowthGate& gate, std::size_t workers) {
     return Level{generator, store,   discovery, parent,   gate,    0,       first_new, 0,
-                 0,         workers, 0,         progress, signals, nullptr, nullptr};
+                 0,         workers, no_limits, progress, signals, nullptr, nullptr};
   }
   Words stored(StateId id) const { return Words(store.state(id), store.state(id) + a.words()); }
 
   tioa::Automaton a;
   tioa::SuccessorGenerator generator;
+  Limits no_limits;
   StateStore store;
   Discovery discovery;
   MappedVector<StateId> parent; // written by one worker alone
