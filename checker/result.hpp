@@ -61,6 +61,10 @@ struct PropertyResult {
   std::string trace_kind; // invariant, lasso, deadlock, time-lock, closure-step, worst-case
   std::vector<std::string> notes;
   std::vector<std::pair<std::string, std::string>> figures; // further named numbers
+  // Counterexamples and witnesses that are not traces of the automaton (a round of
+  // mc-round's lemmas, a matrix of Lemma 6.8): each one JSON object as text, {"role",
+  // "kind", "claim", ...} (proofs/witness_json.hpp), for --json and --trace-out.
+  std::vector<std::string> witnesses;
 };
 
 // A result of `kind` with the figures of an exploration: states, edges, depth, seconds,

@@ -82,9 +82,11 @@ std::pair<Trace, Trace> traces_to(const PairStore& pairs, StateId id,
     const tioa::StepLabel& lx = pairs.via_x[path[i]];
     const tioa::StepLabel& ly = pairs.via_y[path[i]];
     tx.steps.push_back({gx.describe(lx), tx.steps.back().time + gx.duration(lx),
-                        std::vector<Word>(pairs.x(path[i]), pairs.x(path[i]) + pairs.wx)});
+                        std::vector<Word>(pairs.x(path[i]), pairs.x(path[i]) + pairs.wx),
+                        trace_action(gx, lx)});
     ty.steps.push_back({gy.describe(ly), ty.steps.back().time + gy.duration(ly),
-                        std::vector<Word>(pairs.y(path[i]), pairs.y(path[i]) + pairs.wy)});
+                        std::vector<Word>(pairs.y(path[i]), pairs.y(path[i]) + pairs.wy),
+                        trace_action(gy, ly)});
   }
   return {std::move(tx), std::move(ty)};
 }
@@ -173,7 +175,8 @@ SimulationSearch search_simulation(const tioa::SuccessorGenerator& gx,
     out.stop = StopReason::found;
     v.start = pairs.start[v.pair];
     auto [tx, ty] = traces_to(pairs, v.pair, gx, gy);
-    tx.steps.push_back({gx.describe(v.step), tx.steps.back().time + gx.duration(v.step), v.to});
+    tx.steps.push_back({gx.describe(v.step), tx.steps.back().time + gx.duration(v.step), v.to,
+                        trace_action(gx, v.step)});
     v.x_trace = std::move(tx);
     v.y_trace = std::move(ty);
   }

@@ -17,6 +17,7 @@ std::vector<Word> copy_state(const Word* state, std::uint32_t words) {
 struct Step {
   std::string action;
   std::uint32_t duration;
+  TraceAction call;
 };
 
 // Every step from `from` that reaches `to`, in the generator's order.
@@ -27,7 +28,8 @@ std::vector<Step> steps_between(const tioa::SuccessorGenerator& generator, const
   std::vector<Step> found;
   generator.successors(from, scratch.data(), [&](const Word* succ, const tioa::StepLabel& label) {
     if (std::memcmp(succ, to, words * sizeof(Word)) == 0)
-      found.push_back({generator.describe(label), generator.duration(label)});
+      found.push_back(
+          {generator.describe(label), generator.duration(label), trace_action(generator, label)});
   });
   return found;
 }
@@ -90,6 +92,22 @@ std::vector<std::vector<Word>> reexecute(const tioa::SuccessorGenerator& generat
 
 } // namespace
 
+TraceAction trace_action(const tioa::SuccessorGenerator& generator, const tioa::StepLabel& label) {
+  TraceAction out;
+  if (label.is_tick()) {
+    out.name = "tick";
+    return out;
+  }
+  const tioa::ActionSignature& signature = generator.automaton().actions()[label.action];
+  out.name = signature.name;
+  for (std::size_t i = 0; i < label.params.size; ++i) {
+    const std::string& name = i < signature.params.size() ? signature.params[i].name : "";
+    out.params.emplace_back(name.empty() ? "#" + std::to_string(i + 1) : name, label.params[i]);
+  }
+  out.choice = label.choice;
+  return out;
+}
+
 Trace trace_to(const tioa::SuccessorGenerator& generator, const Exploration& ex, StateId id) {
   std::vector<StateId> path;
   for (StateId at = id; at != no_parent; at = ex.parent[at])
@@ -120,7 +138,7 @@ bool extend(const tioa::SuccessorGenerator& generator, Trace& trace, const Word*
   for (const Step& step : steps_between(generator, last.state.data(), next))
     if (!duration || step.duration == *duration) {
       trace.steps.push_back(
-          {step.action, last.time + step.duration, copy_state(next, generator.words())});
+          {step.action, last.time + step.duration, copy_state(next, generator.words()), step.call});
       return true;
     }
   return false;

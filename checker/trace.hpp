@@ -13,10 +13,19 @@
 
 namespace checker {
 
+// An action as a program reads it: its name, its parameters by name (in the signature's
+// order) and the choice of its effect when it has several. A tick is named "tick".
+struct TraceAction {
+  std::string name;
+  std::vector<std::pair<std::string, std::int64_t>> params;
+  std::uint32_t choice = 0;
+};
+
 struct TraceStep {
-  std::string action;     // empty for the first state
+  std::string action;     // the label as printed, "enter(2)"; empty for the first state
   std::uint64_t time = 0; // elapsed time at this state (quanta, or steps when untimed)
   std::vector<Word> state;
+  TraceAction call = {}; // the same action, structured (empty name for the first state)
 };
 
 struct Trace {
@@ -25,6 +34,10 @@ struct Trace {
 
   std::size_t length() const { return steps.empty() ? 0 : steps.size() - 1; }
 };
+
+// The structured form of the step `label` of the generator's automaton. A parameter the
+// signature leaves unnamed is named by its position ("#1").
+TraceAction trace_action(const tioa::SuccessorGenerator& generator, const tioa::StepLabel& label);
 
 // The path of parents from a start state to `id`, with each step's action recovered by
 // regenerating the parent's successors (the first one equal to the child).

@@ -19,6 +19,8 @@
 #include "checker/interrupt.hpp"
 #include "cli/commands.hpp"
 #include "cli/exit_status.hpp"
+#include "cli/replay.hpp"
+#include "cli/walk.hpp"
 #include "support/text.hpp"
 #include "tioa/errors.hpp"
 
@@ -119,6 +121,26 @@ void add_model_options(CLI::App* command, ModelRequest& request, const std::stri
       ->delimiter(',');
 }
 
+// --start, --invariant and --trace-out: check, explore and walk.
+void add_state_options(CLI::App* command, RunSettings& settings) {
+  command
+      ->add_option("--start", settings.start,
+                   "start only from the start states where EXPR holds, e.g. 'id=0, loc[1]=REQ' "
+                   "(variables it does not name are arbitrary; with --from arbitrary, every "
+                   "valuation where it holds)")
+      ->type_name("EXPR");
+  command
+      ->add_option("--invariant", settings.invariant,
+                   "also check this invariant, an expression over the variables: 'count(i in "
+                   "1..3: loc[i] = CS) <= 1' (alone when no --prop is given)")
+      ->type_name("EXPR");
+  command
+      ->add_option("--trace-out", settings.trace_out_path,
+                   "write every counterexample and witness as JSON to FILE (read back with replay)")
+      ->type_name("FILE")
+      ->check(non_empty_name);
+}
+
 void add_run_options(CLI::App* command, RunSettings& settings, Limits& limits, std::string& trace,
                      std::string& store, bool with_trace) {
   command->add_flag("--json", settings.json, "print one JSON object on stdout");
@@ -167,6 +189,13 @@ void add_run_options(CLI::App* command, RunSettings& settings, Limits& limits, s
                      "also write the traces as one self-contained HTML page to FILE")
         ->type_name("FILE")
         ->check(non_empty_name);
+    command
+        ->add_option(
+            "--dot", settings.dot_path,
+            "write the reachable state graph (at most 2000 states) in Graphviz DOT to FILE")
+        ->type_name("FILE")
+        ->check(non_empty_name);
+    add_state_options(command, settings);
   }
 }
 
@@ -206,6 +235,39 @@ int run_command(int argc, char** argv, const catalogue::Catalogue& models, const
       ->check(CLI::IsMember({"arbitrary", "start"}));
   add_run_options(explore, settings, limits, trace, store, true);
 
+  CLI::App* walk = app.add_subcommand(
+      "walk", "one random execution: each step drawn among the enabled ones, the model's "
+              "invariants watched (as SPIN's and TLC's simulation)");
+  add_model_options(walk, request, name);
+  WalkSettings walk_settings;
+  walk->add_option("--steps", walk_settings.steps, "stop after N steps (default 100)")
+      ->type_name("N")
+      ->check(whole_number());
+  walk->add_option("--seed", walk_settings.seed, "seed of the random choices (default 1)")
+      ->type_name("S")
+      ->check(whole_number());
+  walk->add_option("--from", walk_settings.from,
+                   "start (default: a start state drawn at random) or arbitrary (a random "
+                   "valuation)")
+      ->type_name("FROM")
+      ->check(CLI::IsMember({"arbitrary", "start"}));
+  walk->add_flag("--json", settings.json, "print one JSON object on stdout");
+  walk->add_option("--trace", trace, "how to show the walk: text or json")
+      ->type_name("MODE")
+      ->check(CLI::IsMember({"text", "json"}));
+  add_state_options(walk, settings);
+
+  CLI::App* replay = app.add_subcommand(
+      "replay", "re-execute the traces of a --trace-out file step by step and evaluate their "
+                "property again");
+  std::string replay_file;
+  bool replay_json = false;
+  replay->add_option("MODEL", request.model, "the model the file's traces are of")->required();
+  replay->add_option("FILE", replay_file, "a file written with --trace-out")
+      ->required()
+      ->check(non_empty_name);
+  replay->add_flag("--json", replay_json, "print one JSON object on stdout");
+
   CLI::App* suite = app.add_subcommand(
       "suite", "run every model's suite against the expected verdicts (the CI run)");
   std::vector<std::string> suite_models;
@@ -219,7 +281,7 @@ int run_command(int argc, char** argv, const catalogue::Catalogue& models, const
     CLI::App* sub = app.add_subcommand(command.name, command.description);
     extra.emplace_back(sub, command.declare(*sub));
   }
-  std::vector<std::string> names{"list", "check", "explore", "suite"};
+  std::vector<std::string> names{"list", "check", "explore", "walk", "replay", "suite"};
   for (const Command& command : program.commands)
     names.push_back(command.name);
 
@@ -263,6 +325,10 @@ int run_command(int argc, char** argv, const catalogue::Catalogue& models, const
       return command_check(models, request, settings);
     if (explore->parsed())
       return command_explore(models, request, from, settings);
+    if (walk->parsed())
+      return command_walk(models, request, walk_settings, settings);
+    if (replay->parsed())
+      return command_replay(models, request.model, replay_file, replay_json);
     for (const auto& [command, runner] : extra)
       if (command->parsed())
         return runner();

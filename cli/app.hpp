@@ -1,8 +1,8 @@
 #pragma once
 // The command line as a library: a program hands its models to cli::run and gets
-// list, check, explore and suite, the text, JSON, JUnit and HTML reports, one-line errors
-// with exit 2, a memory limit by default and progress on a terminal. tioa-check is
-// cli::run over the built-in models plus two commands of its own (cli/main.cpp):
+// list, check, explore, walk, replay and suite, the text, JSON, JUnit and HTML reports, one-line
+// errors with exit 2, a memory limit by default and progress on a terminal. tioa-check is cli::run
+// over the built-in models plus two commands of its own (cli/main.cpp):
 //
 //   int main(int argc, char** argv) {
 //     catalogue::Catalogue models;
@@ -24,7 +24,7 @@ class Validator;
 
 namespace cli {
 
-// A command of a program beyond list, check, explore and suite. `declare` adds the
+// A command of a program beyond list, check, explore, walk, replay and suite. `declare` adds the
 // command's options to `command` (the subcommand cli::run made with this name and
 // description) and returns what runs it once given: its exit code (exit_status.hpp); it may
 // throw catalogue::UsageError on bad input, which becomes one line and exit 2.
@@ -38,7 +38,7 @@ struct Program {
   std::string name;              // in help and error lines; empty: the file name of argv[0]
   std::string description;       // the help's first line; empty: "<name>: an explicit-state
                                  // checker for timed I/O automata"
-  std::vector<Command> commands; // after list, check, explore, suite, in this order
+  std::vector<Command> commands; // after list, check, explore, walk, replay, suite, in this order
 };
 
 // Parses the command line and runs one command over `models`; returns the exit code:

@@ -9,39 +9,55 @@
 #include "cli/render_html.hpp"
 #include "cli/report_junit.hpp"
 #include "cli/report_text.hpp"
+#include "cli/run_system.hpp"
+#include "cli/state_graph.hpp"
+#include "cli/trace_file.hpp"
 #include "tioa/operators.hpp"
 
 namespace cli {
 
 namespace {
 
-struct Built {
-  const catalogue::ModelDefinition* definition;
-  catalogue::ParamValues values;
-  catalogue::ModelInstance instance;
+// The report files a run writes, each opened before the run (a path that cannot be written
+// is a usage error before anything runs).
+struct ReportFiles {
+  std::optional<std::ofstream> junit, html, trace_out;
+  explicit ReportFiles(const RunSettings& settings)
+      : junit(open_report_file(settings.junit_path)), html(open_report_file(settings.html_path)),
+        trace_out(open_report_file(settings.trace_out_path)) {}
 };
 
-Built build(const catalogue::Catalogue& models, const ModelRequest& request) {
-  const catalogue::ModelDefinition& definition = models.find(request.model);
-  catalogue::ParamValues values = catalogue::resolve_params(definition, request.param_settings);
-  catalogue::ModelInstance instance = definition.build(values);
-  return {&definition, std::move(values), std::move(instance)};
+// The properties a check or explore runs: those asked for (`chosen`), and the one given with
+// --invariant (alone when no --prop asks for others). --start narrows the start states of
+// the checks that explore the system; a check of its own (proofs/) builds its own systems,
+// so the two do not go together.
+std::vector<const checker::Property*>
+with_given_invariant(std::vector<const checker::Property*> chosen,
+                     const std::optional<checker::Property>& invariant, const ModelRequest& request,
+                     const RunSettings& settings) {
+  if (invariant && request.properties.empty())
+    chosen.clear();
+  if (invariant)
+    chosen.push_back(&*invariant);
+  if (!settings.start.empty())
+    for (const checker::Property* p : chosen)
+      if (p->kind == checker::PropertyKind::custom)
+        throw catalogue::UsageError("--start: property '" + p->name + "' of model '" +
+                                    request.model +
+                                    "' is a check of its own, with its own start states; --start "
+                                    "narrows the start states of invariants, legal sets, "
+                                    "stabilisation and deadlock checks (choose them with --prop)");
+  return chosen;
 }
 
-ModelRun start_run(const Built& built, const tioa::Automaton& system) {
-  ModelRun run;
-  run.model = built.definition->name;
-  run.params = ordered_params(*built.definition, built.values);
-  run.variant = catalogue::variant_name(*built.definition, built.values);
-  run.quantum = built.instance.quantum;
-  run.layout = system.layout();
-  return run;
-}
-
-// Prints the report the settings ask for, writes the JUnit file and the HTML page, returns
-// the exit code.
+// Prints the report the settings ask for, writes the JUnit file, the HTML page and the
+// trace file, returns the exit code.
 int report(const ModelRun& run, const catalogue::Picture& picture, const RunSettings& settings,
-           std::optional<std::ofstream>& junit, std::optional<std::ofstream>& html) {
+           ReportFiles& files) {
+  std::optional<std::ofstream>& junit = files.junit;
+  std::optional<std::ofstream>& html = files.html;
+  if (files.trace_out)
+    write_trace_file(*files.trace_out, settings.trace_out_path, run);
   if (settings.json)
     print_json(run_json(run, settings.trace != TraceMode::none));
   else
@@ -81,8 +97,14 @@ void run_properties(ModelRun& run, const tioa::Automaton& system,
 
 int command_check(const catalogue::Catalogue& models, const ModelRequest& request,
                   const RunSettings& settings) {
-  const Built built = build(models, request);
-  const auto properties = select_properties(built.instance, request.model, request.properties);
+  const BuiltModel built = build_model(models, request);
+  const tioa::Automaton system = run_system(built, "start", settings.start);
+  std::optional<checker::Property> invariant;
+  if (!settings.invariant.empty())
+    invariant = given_invariant(system.layout(), settings.invariant);
+  const auto properties =
+      with_given_invariant(select_properties(built.instance, request.model, request.properties),
+                           invariant, request, settings);
   if (settings.store == checker::StoreKind::fingerprint)
     for (const checker::Property* property : properties)
       if (!checker::runs_on_fingerprint_store(*property))
@@ -91,18 +113,25 @@ int command_check(const catalogue::Catalogue& models, const ModelRequest& reques
             "' is a " + checker::to_string(property->kind) +
             " property; only invariants and deadlock / time-lock checks run on the fingerprint "
             "store (the others read states or edges after the search): use --store exact");
-  auto junit = open_report_file(settings.junit_path);
-  auto html = open_report_file(settings.html_path);
-  ModelRun run = start_run(built, built.instance.system);
-  run_properties(run, built.instance.system, properties, explore_options(settings));
-  return report(run, built.definition->picture, settings, junit, html);
+  ReportFiles files(settings);
+  if (!settings.dot_path.empty())
+    write_state_graph(system, settings.dot_path);
+  ModelRun run = start_run(built, system);
+  run.start = settings.start;
+  run.invariant = settings.invariant;
+  run_properties(run, system, properties, explore_options(settings));
+  return report(run, built.definition->picture, settings, files);
 }
 
 int command_explore(const catalogue::Catalogue& models, const ModelRequest& request,
                     const std::string& from, const RunSettings& settings) {
   if (from != "arbitrary" && from != "start")
     throw catalogue::UsageError("--from must be 'arbitrary' or 'start', not '" + from + "'");
-  const Built built = build(models, request);
+  const BuiltModel built = build_model(models, request);
+  const tioa::Automaton system = run_system(built, from, settings.start);
+  std::optional<checker::Property> invariant;
+  if (!settings.invariant.empty())
+    invariant = given_invariant(system.layout(), settings.invariant);
   std::vector<const checker::Property*> properties;
   for (const checker::Property* p :
        select_properties(built.instance, request.model, request.properties)) {
@@ -113,8 +142,7 @@ int command_explore(const catalogue::Catalogue& models, const ModelRequest& requ
                                   "' of model '" + request.model + "' is a " +
                                   checker::to_string(p->kind) + " property (use check)");
   }
-  const tioa::Automaton system =
-      from == "arbitrary" ? tioa::U(built.instance.system) : built.instance.system;
+  properties = with_given_invariant(properties, invariant, request, settings);
   checker::Property no_deadlock;
   no_deadlock.kind = checker::PropertyKind::deadlock;
   no_deadlock.predicate = built.instance.ended;
@@ -127,10 +155,13 @@ int command_explore(const catalogue::Catalogue& models, const ModelRequest& requ
     no_deadlock.description = "no reachable state where no action is enabled";
   }
 
-  auto junit = open_report_file(settings.junit_path);
-  auto html = open_report_file(settings.html_path);
+  ReportFiles files(settings);
+  if (!settings.dot_path.empty())
+    write_state_graph(system, settings.dot_path);
   ModelRun run = start_run(built, system);
   run.from = from;
+  run.start = settings.start;
+  run.invariant = settings.invariant;
   const checker::ExploreOptions options = explore_options(settings);
   try {
     std::vector<const checker::Property*> all = properties;
@@ -145,7 +176,7 @@ int command_explore(const catalogue::Catalogue& models, const ModelRequest& requ
                                 "' is not defined on arbitrary states (a step from one gives: " +
                                 e.what() + "); explore it with --from start");
   }
-  return report(run, built.definition->picture, settings, junit, html);
+  return report(run, built.definition->picture, settings, files);
 }
 
 } // namespace cli

@@ -1,5 +1,5 @@
 #pragma once
-// The four commands every program of cli::run has (cli/app.hpp), over the models of a
+// The commands every program of cli::run has (cli/app.hpp), over the models of a
 // catalogue. Each returns the process exit code (exit_status.hpp) and throws
 // catalogue::UsageError or tioa::ModelError on bad input.
 

@@ -4,6 +4,23 @@
 
 namespace cli {
 
+BuiltModel build_model(const catalogue::Catalogue& models, const ModelRequest& request) {
+  const catalogue::ModelDefinition& definition = models.find(request.model);
+  catalogue::ParamValues values = catalogue::resolve_params(definition, request.param_settings);
+  catalogue::ModelInstance instance = definition.build(values);
+  return {&definition, std::move(values), std::move(instance)};
+}
+
+ModelRun start_run(const BuiltModel& built, const tioa::Automaton& system) {
+  ModelRun run;
+  run.model = built.definition->name;
+  run.params = ordered_params(*built.definition, built.values);
+  run.variant = catalogue::variant_name(*built.definition, built.values);
+  run.quantum = built.instance.quantum;
+  run.layout = system.layout();
+  return run;
+}
+
 OrderedParams ordered_params(const catalogue::ModelDefinition& model,
                              const catalogue::ParamValues& values) {
   OrderedParams out;

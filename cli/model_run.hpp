@@ -23,8 +23,11 @@ struct ModelRun {
   // "paper", or the variant parameters set away from the paper's algorithm; "" when the
   // model declares no variant (catalogue::variant_name).
   std::string variant;
-  std::string quantum; // what one tick is; empty when the model is untimed
-  std::string from;    // explore: "arbitrary" or "start"; empty otherwise
+  std::string quantum;             // what one tick is; empty when the model is untimed
+  std::string command = "explore"; // the command that ran: explore, walk (for the header)
+  std::string from;                // explore, walk: "arbitrary" or "start"; empty otherwise
+  std::string start;               // --start: the start predicate as given (empty: none)
+  std::string invariant;           // --invariant: the invariant as given (empty: none)
   tioa::StateLayout layout;
   std::vector<checker::PropertyResult> results;
   // A stop was requested (SIGINT, SIGTERM) while the last result ran: it is incomplete, and
@@ -32,6 +35,19 @@ struct ModelRun {
   bool interrupted = false;
   std::vector<std::string> not_run;
 };
+
+// A model definition, its resolved parameters and the instance they build.
+struct BuiltModel {
+  const catalogue::ModelDefinition* definition;
+  catalogue::ParamValues values;
+  catalogue::ModelInstance instance;
+};
+
+// Resolves the request's parameters and builds the instance; throws UsageError.
+BuiltModel build_model(const catalogue::Catalogue& models, const ModelRequest& request);
+
+// A run of `built` on `system` (the instance's system, or U of it) with no results yet.
+ModelRun start_run(const BuiltModel& built, const tioa::Automaton& system);
 
 OrderedParams ordered_params(const catalogue::ModelDefinition& model,
                              const catalogue::ParamValues& values);

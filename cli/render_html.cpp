@@ -102,7 +102,7 @@ void write_frame(std::ostream& out, const Json& report, const catalogue::Picture
   if (step["action"].is_null())
     out << "start state";
   else
-    out << "after <code>" << html_text(step["action"].get<std::string>()) << "</code>";
+    out << "after <code>" << html_text(step["action"]["text"].get<std::string>()) << "</code>";
   out << ", t = " << step["time"].dump();
   if (loop_start)
     out << " <span class=\"loop-note\">(the loop starts here)</span>";

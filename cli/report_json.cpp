@@ -42,7 +42,36 @@ Json value_json(const tioa::VariableInfo& variable, const std::string& text) {
   return text;
 }
 
+// A figure's value: a number when the whole text is one, else the text ("1/2", "n/a").
+Json figure_json(const std::string& text) {
+  std::int64_t whole = 0;
+  const char* end = text.data() + text.size();
+  if (auto [at, error] = std::from_chars(text.data(), end, whole);
+      error == std::errc() && at == end)
+    return whole;
+  double number = 0;
+  if (auto [at, error] = std::from_chars(text.data(), end, number);
+      error == std::errc() && at == end && !text.empty())
+    return number;
+  return text;
+}
+
 } // namespace
+
+Json action_json(const checker::TraceStep& step) {
+  if (step.action.empty())
+    return nullptr;
+  Json out;
+  out["name"] = step.call.name.empty() ? step.action : step.call.name;
+  Json params = Json::object();
+  for (const auto& [name, value] : step.call.params)
+    params[name] = value;
+  out["params"] = std::move(params);
+  if (step.call.choice != 0)
+    out["choice"] = step.call.choice;
+  out["text"] = step.action;
+  return out;
+}
 
 Json trace_json(const tioa::StateLayout& layout, const checker::PropertyResult& result) {
   const checker::Trace& trace = *result.trace;
@@ -54,7 +83,7 @@ Json trace_json(const tioa::StateLayout& layout, const checker::PropertyResult& 
     for (std::size_t v = 0; v < rendered.size(); ++v)
       state[rendered[v].first] = value_json(variables[v], rendered[v].second);
     Json item;
-    item["action"] = step.action.empty() ? Json(nullptr) : Json(step.action);
+    item["action"] = action_json(step);
     item["time"] = step.time;
     item["state"] = std::move(state);
     steps.push_back(std::move(item));
@@ -103,10 +132,16 @@ Json property_json(const ModelRun& run, const checker::PropertyResult& r, bool w
   out["notes"] = r.notes;
   Json figures = Json::object();
   for (const auto& [name, value] : r.figures)
-    figures[name] = value;
+    figures[name] = figure_json(value);
   out["figures"] = std::move(figures);
   if (with_trace && r.trace)
     out["trace"] = trace_json(run.layout, r);
+  if (!r.witnesses.empty()) {
+    Json witnesses = Json::array();
+    for (const std::string& text : r.witnesses)
+      witnesses.push_back(Json::parse(text));
+    out["witnesses"] = std::move(witnesses);
+  }
   return out;
 }
 

@@ -10,6 +10,10 @@ namespace cli {
 
 using Json = nlohmann::ordered_json; // keys in the order written
 
+// A step's action: {"name", "params": {name: value}, ["choice"], "text"}; null for the first
+// state.
+Json action_json(const checker::TraceStep& step);
+
 // {"role", "kind", "loop_start" (or null), "length", "steps": [{"action" (null for the
 // first state), "time", "state": {variable: value}}]}
 Json trace_json(const tioa::StateLayout& layout, const checker::PropertyResult& result);

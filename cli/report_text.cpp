@@ -147,10 +147,13 @@ void print_text_report(std::ostream& out, const ModelRun& run, TraceMode trace) 
   out << run.model;
   if (!run.params.empty())
     out << "  " << format_params(run.params);
-  if (run.from == "arbitrary")
-    out << "  (explore from arbitrary states: U(A), every valuation is a start state)";
+  if (!run.start.empty())
+    out << "  (from every state where " << run.start << ")";
+  else if (run.from == "arbitrary")
+    out << "  (" << run.command
+        << " from arbitrary states: U(A), every valuation is a start state)";
   else if (run.from == "start")
-    out << "  (explore from the model's start states)";
+    out << "  (" << run.command << " from the model's start states)";
   if (!run.variant.empty())
     out << "\nvariant: " << variant_text(run.variant);
   out << "\n\n";

@@ -22,6 +22,10 @@ struct RunSettings {
   std::string junit_path; // empty: no JUnit file
   std::string html_path;  // empty: no HTML page of the traces (check, explore)
   TraceMode trace = TraceMode::text;
+  std::string trace_out_path; // --trace-out: every trace as JSON to this file (trace_file.hpp)
+  std::string dot_path;       // --dot: the state graph to this file (state_graph.hpp)
+  std::string start;          // --start: a start predicate (checker/state_expression.hpp)
+  std::string invariant;      // --invariant: an invariant to check besides the model's
 };
 
 // What `check` and `explore` run: a model, its parameter settings ("name=value") and the

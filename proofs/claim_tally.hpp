@@ -181,15 +181,18 @@ template <class Witness> struct Check {
                              c.claim.source + "]");
   }
 
-  // Notes every claim's smallest counterexample line by line (the witness's lines()); with
-  // `or_largest`, the largest measured instance of a claim that has none.
+  // Notes every claim's smallest counterexample line by line (the witness's lines()), and
+  // keeps its structured form (json()); with `or_largest`, the largest measured instance of
+  // a claim that has none.
   void note_witnesses(bool or_largest = false) {
     for (const Tally<Witness>& c : claims) {
       const std::optional<Witness>& shown =
           c.smallest.has_value() || !or_largest ? c.smallest : c.largest;
-      if (shown)
-        for (std::string& line : shown->lines())
-          result.notes.push_back(std::move(line));
+      if (!shown)
+        continue;
+      for (std::string& line : shown->lines())
+        result.notes.push_back(std::move(line));
+      result.witnesses.push_back(shown->json());
     }
   }
 };

@@ -1,4 +1,5 @@
 #include "proofs/fixpoint_lemma.hpp"
+#include "proofs/witness_json.hpp"
 #include "support/text.hpp"
 
 #include <algorithm>
@@ -114,6 +115,27 @@ std::vector<std::string> BoundWitness::lines() const {
   out.push_back("  measured " + show(measurement.value) + (violated() ? " > " : " <= ") + "bound " +
                 show(measurement.bound) + ": " + measurement.detail);
   return out;
+}
+
+std::string BoundWitness::json() const {
+  const int m = setting.m;
+  Json out;
+  out["role"] = violated() ? "counterexample" : "witness";
+  out["kind"] = "run-to-fixpoint";
+  out["claim"] = claim;
+  out["setting"] = setting_json(setting);
+  out["robots"] = robots();
+  Json rounds = Json::array();
+  for (const auto& counts : setting.system().run_to_fixpoint(start).rounds)
+    rounds.push_back(grid_json(m, {counts.begin(), counts.end()}));
+  out["rounds"] = std::move(rounds);
+  out["t_out"] = t_out;
+  out["t_stab"] = t_stab;
+  out["fixpoint_round"] = fixpoint_round;
+  out["measured"] = show(measurement.value);
+  out["bound"] = show(measurement.bound);
+  out["detail"] = measurement.detail;
+  return out.dump();
 }
 
 template <> std::string Tally<BoundWitness>::summary() const {

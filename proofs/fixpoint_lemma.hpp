@@ -80,6 +80,9 @@ struct BoundWitness {
   // The instance, q, every M_t to the fixed point (up to 40 rounds), T_out, T_stab, and the
   // measured figure beside its bound.
   std::vector<std::string> lines() const;
+  // The same as a JSON object (proofs/witness_json.hpp), as text; every round to the fixed
+  // point.
+  std::string json() const;
 };
 
 // A claim that is a bound over a check: `premise` the instances on which the figure was

@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include "models/mc/spacing.hpp"
+#include "proofs/witness_json.hpp"
 #include "support/text.hpp"
 
 namespace proofs {
@@ -589,6 +590,30 @@ std::vector<std::string> Lemma68Counterexample::lines() const {
                 show(before) + " -> " + show(after));
   out.push_back("  " + why);
   return out;
+}
+
+std::string Lemma68Counterexample::json() const {
+  auto rationals = [](const std::vector<mc::Rational>& values) {
+    Json out = Json::array();
+    for (const auto& v : values)
+      out.push_back(mc::to_string(v));
+    return out;
+  };
+  Json out;
+  out["role"] = "counterexample";
+  out["kind"] = length ? "round-of-spacing" : "matrix";
+  out["claim"] = claim;
+  out["robots"] = robots;
+  out["rho1"] = mc::to_string(rho1);
+  if (length) {
+    out["length"] = mc::to_string(*length);
+    out["start"] = rationals(start);
+    out["round"] = round;
+    out["before"] = rationals(before);
+    out["after"] = rationals(after);
+  }
+  out["why"] = why;
+  return out.dump();
 }
 
 template <> std::string Tally<Lemma68Counterexample>::summary() const {

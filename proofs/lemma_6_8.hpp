@@ -88,6 +88,8 @@ struct Lemma68Counterexample {
   // Fewest robots.
   std::size_t order_key() const { return robots; }
   std::vector<std::string> lines() const;
+  // The same as a JSON object (proofs/witness_json.hpp), as text.
+  std::string json() const;
 };
 
 // A claim of Lemma 6.8 over the check: `premise` how often it was checked, `violations` how

@@ -1,4 +1,5 @@
 #include "proofs/round_lemma.hpp"
+#include "proofs/witness_json.hpp"
 #include "support/text.hpp"
 
 #include <algorithm>
@@ -250,6 +251,21 @@ std::vector<std::string> RoundCounterexample::lines() const {
     out.push_back(std::move(line));
   out.push_back("  fails: " + why);
   return out;
+}
+
+std::string RoundCounterexample::json() const {
+  const int m = setting.m;
+  Json out;
+  out["role"] = "counterexample";
+  out["kind"] = "round";
+  out["claim"] = claim;
+  out["setting"] = setting_json(setting);
+  out["robots"] = robots();
+  out["counts_before"] = grid_json(m, before);
+  out["flow"] = flow_json(m, flow);
+  out["counts_after"] = grid_json(m, after);
+  out["why"] = why;
+  return out.dump();
 }
 
 template <> std::string Tally<RoundCounterexample>::summary() const {

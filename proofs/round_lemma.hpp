@@ -82,6 +82,8 @@ struct RoundCounterexample {
   std::tuple<RobotCount, int> order_key() const { return {robots(), setting.m}; }
   // The instance, the counts at t, the flow, the counts at t+1 and why the claim fails.
   std::vector<std::string> lines() const;
+  // The same as a JSON object (proofs/witness_json.hpp), as text.
+  std::string json() const;
 };
 
 // A claim of a one-step lemma over a check: premise met, violations (instance, outcome pairs),

@@ -9,6 +9,7 @@
 
 #include "models/mc/spacing.hpp"
 #include "proofs/lemma_6_7.hpp"
+#include "proofs/witness_json.hpp"
 #include "support/text.hpp"
 
 namespace proofs {
@@ -409,6 +410,25 @@ std::string PositionalFamily::describe() const {
          std::to_string(spacing_rounds) + " rounds after T + 2; default order, lowest ids";
 }
 
+std::string PositionalWitness::json(const std::string& role) const {
+  Json out;
+  out["role"] = role;
+  out["kind"] = "positions";
+  out["claim"] = claim;
+  out["setting"] = setting;
+  out["m"] = m;
+  out["robots"] = robots;
+  Json robots_at_start = Json::array();
+  for (const mc::Robot& robot : start)
+    robots_at_start.push_back({{"id", robot.id},
+                               {"x", mc::to_string(robot.position.x)},
+                               {"y", mc::to_string(robot.position.y)}});
+  out["start"] = std::move(robots_at_start);
+  out["rounds"] = lines;
+  out["why"] = why;
+  return out.dump();
+}
+
 template <> std::string Tally<PositionalWitness>::summary() const {
   std::string out = violations > 0  ? "violated on " + std::to_string(violations) + " runs"
                     : undecided > 0 ? "undecided on " + std::to_string(undecided) + " runs"
@@ -616,6 +636,7 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
                     "it stands in that region's closed square (models/mc/README.md)");
   for (const PositionalTally& c : check.claims)
     if (c.smallest) {
+      r.witnesses.push_back(c.smallest->json("counterexample"));
       r.notes.push_back("smallest counterexample to " + c.claim.id + ": " + c.smallest->setting +
                         ", " + std::to_string(c.smallest->robots) + " robots; " + c.smallest->why);
       for (const std::string& round : c.smallest->lines) {
@@ -626,6 +647,7 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
     }
   for (const PositionalTally& c : check.claims)
     if (c.undecided_example) {
+      r.witnesses.push_back(c.undecided_example->json("undecided"));
       r.notes.push_back(
           "smallest undecided run of " + c.claim.id + ": " + c.undecided_example->setting + ", " +
           std::to_string(c.undecided_example->robots) + " robots; " + c.undecided_example->why);

@@ -98,6 +98,9 @@ struct PositionalWitness {
 
   // Fewest robots, then the smaller grid.
   std::tuple<std::size_t, int> order_key() const { return {robots, m}; }
+  // As a JSON object (proofs/witness_json.hpp), as text: the start positions and the
+  // rounds as printed; `role` "counterexample" or "undecided".
+  std::string json(const std::string& role) const;
 };
 
 // A claim of the theorem under one reading over the runs: `premise` the runs where it was

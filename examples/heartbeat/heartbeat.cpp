@@ -1,6 +1,6 @@
 // A heartbeat failure detector written against the installed tioa package, the way code
 // outside this repository uses it: the automata and their properties, registered as one
-// model, and the command line of tioa-check around them (list, check, explore, suite; text,
+// model, and the command line of tioa-check around them (list, check, explore, walk, replay, suite; text,
 // JSON, JUnit and HTML reports) from cli::run. docs/examples.md walks through it.
 //
 //   sender    output beat         clock since (0..P)   deadline: a beat is due at since = P
