@@ -4,6 +4,9 @@ set -euo pipefail
 packages=(g++ cmake ninja-build python3
           libboost-graph-dev libboost-dev libeigen3-dev catch2 libfmt-dev libcli11-dev
           nlohmann-json3-dev
+          # the JSON reports against docs/report.schema.json (tests/cli/validate_reports.py;
+          # skipped without it)
+          python3-jsonschema
           # the headless test of the --html pages (tests/cli/html_tests.cmake; skipped
           # without it). Measured on a Debian 12 CI machine: 130 packages, 137 MB
           # download, 609 MB on disk, 89 s to install.
