@@ -102,8 +102,10 @@ LemmaScope lemma_scope(const ParamValues& p) {
   return scope;
 }
 
-// A lemma property: the exhaustive check of `family`, or the search with samples > 0.
-using LemmaRun = std::function<checker::PropertyResult(const LemmaScope&, unsigned threads)>;
+// A lemma property: the exhaustive check of `family`, or the search with samples > 0, within
+// the property's limits (each instance one state; proofs/family_stop.hpp).
+using LemmaRun =
+    std::function<checker::PropertyResult(const LemmaScope&, const checker::ExploreOptions&)>;
 
 struct LemmaProperty {
   std::string name;
@@ -114,23 +116,31 @@ struct LemmaProperty {
 
 // One-step lemmas (proofs/round_lemma.hpp): check_family or search_random.
 LemmaRun one_step(const proofs::RoundLemma& (*lemma)()) {
-  return [lemma](const LemmaScope& scope, unsigned threads) {
-    if (scope.samples > 0)
-      return proofs::search_random(lemma(), scope.search).result;
-    return proofs::check_family(lemma(), scope.one_step, {.threads = threads}).result;
+  return [lemma](const LemmaScope& scope, const checker::ExploreOptions& run) {
+    if (scope.samples > 0) {
+      proofs::SearchOptions options = scope.search;
+      options.limits = &run.limits;
+      return proofs::search_random(lemma(), options).result;
+    }
+    return proofs::check_family(lemma(), scope.one_step,
+                                {.threads = run.threads, .limits = &run.limits})
+        .result;
   };
 }
 
 // Lemmas about runs to the fixed point (proofs/fixpoint_lemma.hpp): check_fixpoint_family or
 // search_fixpoint (proofs/fixpoint_search.hpp).
 LemmaRun to_fixpoint(const proofs::FixpointLemma& (*lemma)()) {
-  return [lemma](const LemmaScope& scope, unsigned threads) {
+  return [lemma](const LemmaScope& scope, const checker::ExploreOptions& run) {
     if (scope.samples > 0) {
       proofs::FixpointSearchOptions options = scope.fixpoint_search;
-      options.threads = threads;
+      options.threads = run.threads;
+      options.limits = &run.limits;
       return proofs::search_fixpoint(lemma(), options).result;
     }
-    return proofs::check_fixpoint_family(lemma(), scope.fixpoint, {.threads = threads}).result;
+    return proofs::check_fixpoint_family(lemma(), scope.fixpoint,
+                                         {.threads = run.threads, .limits = &run.limits})
+        .result;
   };
 }
 
@@ -169,8 +179,10 @@ const std::vector<LemmaProperty>& lemma_properties() {
        "(exact, Eigen, closed form) and calctarget's dynamics follow e(k+1) = T e(k) and "
        "contract, in exact rationals; rho1 narrows with family=given, samples sets the random "
        "starts",
-       [](const LemmaScope& scope, unsigned threads) {
-         return proofs::check_lemma_6_8(scope.spacing, {.threads = threads}).result;
+       [](const LemmaScope& scope, const checker::ExploreOptions& run) {
+         return proofs::check_lemma_6_8(scope.spacing,
+                                        {.threads = run.threads, .limits = &run.limits})
+             .result;
        }},
       {"theorem-6.9", "Theorem 6.9 (conference Theorem 1)",
        "seed 000 Theorem 6.9 (conference Theorem 1): part (1) at count level over the fixed-point "
@@ -178,8 +190,9 @@ const std::vector<LemmaProperty>& lemma_properties() {
        "under both "
        "membership readings; samples > 0: a seeded random search of up to 12 robots per region at "
        "random points instead of the fixed spots",
-       [](const LemmaScope& scope, unsigned threads) {
-         return proofs::check_theorem_6_9(scope.fixpoint, scope.positions, {.threads = threads})
+       [](const LemmaScope& scope, const checker::ExploreOptions& run) {
+         return proofs::check_theorem_6_9(scope.fixpoint, scope.positions,
+                                          {.threads = run.threads, .limits = &run.limits})
              .result;
        }},
   };
@@ -262,7 +275,7 @@ ModelDefinition mc_round_definition() {
     for (const LemmaProperty& lemma : lemma_properties()) {
       checker::Property property{lemma.name, lemma.title, PropertyKind::custom, {}, "", {}, ""};
       property.run = [scope, run = lemma.run](const checker::ExploreOptions& options) {
-        return run(*scope, options.threads);
+        return run(*scope, options);
       };
       m.properties.push_back(std::move(property));
     }

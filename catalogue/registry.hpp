@@ -83,6 +83,11 @@ using Json = nlohmann::ordered_json;
 using Picture = std::function<void(std::ostream& out, const Json& params, const Json& state,
                                    const std::string& id)>;
 
+// One line on what makes a state what it is beyond its variables (for the token ring: which
+// processes are privileged), shown with each frame of the HTML report. `params` and
+// `state` as for Picture.
+using Explain = std::function<std::string(const Json& params, const Json& state)>;
+
 struct ModelDefinition {
   std::string name;
   std::string description;
@@ -94,6 +99,7 @@ struct ModelDefinition {
   std::vector<SuiteEntry> suite;
   // The picture of a state in HTML reports; none: a table of the variables.
   Picture picture = {};
+  Explain explain = {};
 };
 
 // Bad input from a user: an unknown model, parameter or property, a malformed value.

@@ -1,5 +1,7 @@
 #include "catalogue/token_ring.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "models/token_ring/token_ring.hpp"
 
 namespace catalogue {
@@ -43,6 +45,18 @@ ModelInstance build_token_ring(int n, int k) {
   return m;
 }
 
+// "privileged: P0, P3": the processes whose guard holds (Dijkstra's rule, as
+// models/token_ring/token_ring.cpp writes it), read from a report's state.
+std::string privileged_processes(const Json& params, const Json& state) {
+  const int n = params.at("N").get<int>();
+  const auto x = [&](int i) { return state.at("x[" + std::to_string(i) + "]").get<int>(); };
+  std::string out;
+  for (int i = 0; i < n; ++i)
+    if (i == 0 ? x(0) == x(n - 1) : x(i) != x(i - 1))
+      out += (out.empty() ? "" : ", ") + ("P" + std::to_string(i));
+  return "privileged: " + (out.empty() ? std::string("none") : out);
+}
+
 ModelDefinition token_ring_definition() {
   ModelDefinition d;
   d.name = "token-ring";
@@ -75,6 +89,7 @@ ModelDefinition token_ring_definition() {
              {{{"N", 5}, {"K", 4}}, "transitivity", Verdict::holds},
              {{{"N", 5}, {"K", 3}}, "convergence", Verdict::violated},
              {{{"N", 7}, {"K", 6}}, "convergence", Verdict::holds}};
+  d.explain = privileged_processes;
   return d;
 }
 

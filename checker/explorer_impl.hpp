@@ -39,6 +39,13 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
     throw std::invalid_argument("the fingerprint store keeps no states to canonicalise or "
                                 "edges to record: use the exact store");
   Exploration ex(generator.words(), options.store);
+  // What the property's budget has left (options.hpp): nothing left, nothing explored.
+  const std::uint64_t max_states = limits.states_left();
+  if (limits.states_exhausted()) {
+    ex.stop = StopReason::state_limit;
+    ex.threads = 1;
+    return ex;
+  }
   if (fingerprints)
     ex.start = start;
   LevelStates level_states(generator.words());
@@ -57,7 +64,7 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
       bytes += w.bytes();
     return bytes;
   });
-  Insertion insertion(ex, budget, limits.max_states, states);
+  Insertion insertion(ex, budget, max_states, states);
   // Room for the states of the level being built, up to the store's id limit (fingerprint
   // store).
   auto reserve_states = [&] {
@@ -118,9 +125,9 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
         break;
       }
       GrowthGate gate(used, grow_store);
-      const Level level{generator, ex.store, discovery,         ex.parent, gate,
-                        begin,     end,      limits.max_states, ex.depth,  used,
-                        limits,    progress, signals,           reduction, states};
+      const Level level{generator, ex.store, discovery,  ex.parent, gate,
+                        begin,     end,      max_states, ex.depth,  used,
+                        limits,    progress, signals,    reduction, states};
       const std::span<Worker> active(workers.data(), used);
       expand_level(active, hooks, level, budget);
       if (signals.state_limit && used > 1 && !signals.out_of_time && !signals.out_of_memory) {
@@ -150,6 +157,7 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
     ex.reduced_states += w.reduction.reduced;
   ex.peak_memory_bytes = budget.peak();
   ex.seconds = progress.elapsed();
+  limits.spend_states(ex.store.size());
   return ex;
 }
 

@@ -16,9 +16,25 @@ PropertyResult check_legal_set(const Automaton& system, const StatePredicate& le
   require_exact_store(options, "the legal-set check");
   const tioa::SuccessorGenerator generator(system);
   const std::uint32_t words = generator.words();
-  const tioa::StartSet members =
-      tioa::StartSet::satisfying(system.layout(), legal, "the legal set");
   Progress progress(options.progress, options.task.empty() ? "closure" : options.task);
+  // L is found among every valuation, most of which may be outside it (token-ring N=9, K=9:
+  // 585 members among 9^9): the limits are checked there too, not only at its members.
+  std::string limit;
+  std::uint64_t tried = 0;
+  const tioa::StartSet members = tioa::StartSet::satisfying(
+      system.layout(),
+      [&](const tioa::State& s) {
+        if ((++tried & 0xffff) == 0) {
+          if (interrupted())
+            limit = "interrupted";
+          else if (options.limits.out_of_time(progress.elapsed()))
+            limit = "time limit reached";
+          if (!limit.empty())
+            throw StopEnumeration{};
+        }
+        return legal(s);
+      },
+      "the legal set");
 
   PropertyResult r;
   r.kind = "legal-set";
@@ -26,10 +42,11 @@ PropertyResult check_legal_set(const Automaton& system, const StatePredicate& le
   r.time_unit = generator.timed() ? "quanta" : "steps";
   std::vector<Word> state(words + 1, 0), scratch(words + 1, 0);
   std::optional<std::vector<Word>> bad_from, bad_to;
-  std::string limit;
+  const std::uint64_t max_states = options.limits.states_left();
+  const bool exhausted = options.limits.states_exhausted();
   try {
     members.enumerate(state.data(), 0, [&] {
-      if (options.limits.max_states && r.states >= options.limits.max_states) {
+      if (exhausted || (max_states && r.states >= max_states)) {
         limit = "state limit reached";
         throw StopEnumeration{};
       }
@@ -55,6 +72,7 @@ PropertyResult check_legal_set(const Automaton& system, const StatePredicate& le
     });
   } catch (const StopEnumeration&) {
   }
+  options.limits.spend_states(r.states);
   r.seconds = progress.elapsed();
   if (bad_from) {
     r.verdict = Verdict::violated;

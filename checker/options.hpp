@@ -2,12 +2,22 @@
 // How far and how a check may go. Zero means "no limit". A limit that is hit ends the
 // run with the verdict incomplete, never holds.
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
 namespace checker {
+
+// The states a whole property may visit, over all its explorations, enumerations and
+// searches, and how many they have visited so far (run_property makes one from max_states).
+struct StatesBudget {
+  std::uint64_t max = 0;
+  std::atomic<std::uint64_t> spent{0};
+};
 
 struct Limits {
   std::uint64_t max_states = 0;
@@ -17,6 +27,33 @@ struct Limits {
   // max_seconds, so that a property made of several explorations spends max_seconds in
   // all, not in each (issue 17). None: max_seconds bounds each exploration alone.
   std::optional<std::chrono::steady_clock::time_point> deadline;
+
+  // Shared by the runs of one property (issue 17): max_states bounds them together. None:
+  // max_states bounds each run alone.
+  std::shared_ptr<StatesBudget> states_budget;
+
+  // The state limit of the next run: max_states, or what the property's budget has left if
+  // that is less; 0 means no limit. exhausted() when nothing is left.
+  std::uint64_t states_left() const {
+    std::uint64_t left = max_states;
+    if (states_budget && states_budget->max > 0) {
+      const std::uint64_t spent = states_budget->spent.load(std::memory_order_relaxed);
+      const std::uint64_t rest = spent >= states_budget->max ? 0 : states_budget->max - spent;
+      left = left == 0 ? rest : std::min(left, rest);
+      if (rest == 0)
+        return 0;
+    }
+    return left;
+  }
+  bool states_exhausted() const {
+    return states_budget && states_budget->max > 0 &&
+           states_budget->spent.load(std::memory_order_relaxed) >= states_budget->max;
+  }
+  // Counts `states` against the property's budget (a run that has finished).
+  void spend_states(std::uint64_t states) const {
+    if (states_budget)
+      states_budget->spent.fetch_add(states, std::memory_order_relaxed);
+  }
 
   // Whether time is up, `elapsed` seconds into an exploration.
   bool out_of_time(double elapsed) const {

@@ -26,6 +26,24 @@ bool runs_on_fingerprint_store(const Property& property) {
          (property.kind == PropertyKind::custom && property.fingerprint_store);
 }
 
+namespace {
+
+// For a trace of a property with a legal set (L; L2 of a transitivity check), whether each of
+// its states is in it: what a reader of a stabilisation witness looks for first.
+void mark_legal_set(PropertyResult& result, const Property& property) {
+  const bool has_legal_set = property.kind == PropertyKind::stabilisation ||
+                             property.kind == PropertyKind::transitivity ||
+                             property.kind == PropertyKind::legal_set;
+  if (!has_legal_set || !result.trace || !property.predicate)
+    return;
+  result.legal_set_name = property.predicate_name.empty() ? "L" : property.predicate_name;
+  result.trace_in_legal_set.clear();
+  for (const TraceStep& step : result.trace->steps)
+    result.trace_in_legal_set.push_back(property.predicate(tioa::State(step.state.data(), 0)));
+}
+
+} // namespace
+
 PropertyResult run_property(const Automaton& system, const Property& property,
                             const ExploreOptions& options) {
   if (options.store == StoreKind::fingerprint && !runs_on_fingerprint_store(property))
@@ -39,6 +57,11 @@ PropertyResult run_property(const Automaton& system, const Property& property,
     named.limits.deadline = std::chrono::steady_clock::now() +
                             std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                 std::chrono::duration<double>(named.limits.max_seconds));
+  // --max-states likewise (options.hpp, StatesBudget); a budget set by the caller stays.
+  if (named.limits.max_states > 0 && !named.limits.states_budget) {
+    named.limits.states_budget = std::make_shared<StatesBudget>();
+    named.limits.states_budget->max = named.limits.max_states;
+  }
   PropertyResult result;
   switch (property.kind) {
   case PropertyKind::invariant:
@@ -63,6 +86,7 @@ PropertyResult run_property(const Automaton& system, const Property& property,
   }
   result.name = property.name;
   result.description = property.description;
+  mark_legal_set(result, property);
   claim_only_covered(result);
   return result;
 }

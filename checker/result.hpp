@@ -59,6 +59,10 @@ struct PropertyResult {
   std::optional<Trace> trace;
   std::string trace_role; // "counterexample" or "witness"
   std::string trace_kind; // invariant, lasso, deadlock, time-lock, closure-step, worst-case
+  // For a property with a legal set L (stabilisation, transitivity: L2, legal-set): its
+  // name, and whether each state of the trace is in it (run_property fills them).
+  std::string legal_set_name;
+  std::vector<bool> trace_in_legal_set;
   std::vector<std::string> notes;
   std::vector<std::pair<std::string, std::string>> figures; // further named numbers
   // Counterexamples and witnesses that are not traces of the automaton (a round of

@@ -120,8 +120,9 @@ SimulationSearch search_simulation(const tioa::SuccessorGenerator& gx,
   std::vector<Word> here(wx + wy + 1, 0);
   std::vector<Word> scratch_x(wx + 1, 0), scratch_y(wy + 1, 0);
   const Limits& limits = options.limits;
+  const std::uint64_t max_states = limits.states_left();
   for (StateId id = 0; id < pairs.store.size() && !out.violation; ++id) {
-    if (limits.max_states != 0 && pairs.store.size() >= limits.max_states) {
+    if (limits.states_exhausted() || (max_states != 0 && pairs.store.size() >= max_states)) {
       out.stop = StopReason::state_limit;
       break;
     }
@@ -168,6 +169,7 @@ SimulationSearch search_simulation(const tioa::SuccessorGenerator& gx,
   }
 
   out.pairs = pairs.store.size();
+  limits.spend_states(out.pairs);
   out.depth = pairs.level.empty() ? 0 : *std::max_element(pairs.level.begin(), pairs.level.end());
   out.seconds = std::chrono::duration<double>(Clock::now() - options.started).count();
   if (out.violation) {

@@ -52,8 +52,8 @@ with_given_invariant(std::vector<const checker::Property*> chosen,
 
 // Prints the report the settings ask for, writes the JUnit file, the HTML page and the
 // trace file, returns the exit code.
-int report(const ModelRun& run, const catalogue::Picture& picture, const RunSettings& settings,
-           ReportFiles& files) {
+int report(const ModelRun& run, const catalogue::ModelDefinition& definition,
+           const RunSettings& settings, ReportFiles& files) {
   std::optional<std::ofstream>& junit = files.junit;
   std::optional<std::ofstream>& html = files.html;
   if (files.trace_out)
@@ -69,7 +69,7 @@ int report(const ModelRun& run, const catalogue::Picture& picture, const RunSett
       throw catalogue::UsageError("cannot write the report file '" + settings.junit_path + "'");
   }
   if (html) {
-    write_html(*html, run_json(run, true), picture);
+    write_html(*html, run_json(run, true), definition.picture, definition.explain);
     html->close();
     if (!*html)
       throw catalogue::UsageError("cannot write the HTML file '" + settings.html_path + "'");
@@ -120,7 +120,7 @@ int command_check(const catalogue::Catalogue& models, const ModelRequest& reques
   run.start = settings.start;
   run.invariant = settings.invariant;
   run_properties(run, system, properties, explore_options(settings));
-  return report(run, built.definition->picture, settings, files);
+  return report(run, *built.definition, settings, files);
 }
 
 int command_explore(const catalogue::Catalogue& models, const ModelRequest& request,
@@ -176,7 +176,7 @@ int command_explore(const catalogue::Catalogue& models, const ModelRequest& requ
                                 "' is not defined on arbitrary states (a step from one gives: " +
                                 e.what() + "); explore it with --from start");
   }
-  return report(run, built.definition->picture, settings, files);
+  return report(run, *built.definition, settings, files);
 }
 
 } // namespace cli

@@ -19,6 +19,8 @@ h1 { font-size: 1.4em; } h2 { font-size: 1.2em; margin-top: 2em; }
 .frame { border: 1px solid #ccc; border-radius: 6px; padding: 0.6em 1em; margin: 0.8em 0; }
 .frame h3 { font-size: 1em; margin: 0 0 0.5em 0; }
 .loop { border-color: #7b1fa2; }
+.frame.in-l { border-left: 6px solid #1a7f37; } .frame.out-l { border-left: 6px solid #c62828; }
+.legal { margin: 0 0 0.5em 0; } .legal b.in { color: #1a7f37; } .legal b.out { color: #c62828; }
 table.state { border-collapse: collapse; font-family: monospace; }
 table.state td, table.state th { border: 1px solid #ddd; padding: 0.15em 0.6em; text-align: left; }
 tr.changed td { background: #fff3b0; font-weight: bold; } .was { color: #777; font-weight: normal; }
@@ -92,12 +94,28 @@ std::string params_text(const Json& params) {
   return out;
 }
 
+// The model's line on a state (catalogue::Explain), or "" when it has none or it cannot
+// read this state.
+std::string explanation(const catalogue::Explain& explain, const Json& report, const Json& state) {
+  if (!explain)
+    return "";
+  try {
+    return explain(report["params"], state);
+  } catch (const std::exception&) {
+    return "";
+  }
+}
+
 void write_frame(std::ostream& out, const Json& report, const catalogue::Picture& picture,
-                 const Json& trace, const std::string& trace_id, std::size_t index) {
+                 const catalogue::Explain& explain, const Json& trace, const std::string& trace_id,
+                 std::size_t index) {
   const Json& steps = trace["steps"];
   const Json& step = steps[index];
   const bool loop_start = trace["loop_start"].is_number() && trace["loop_start"] == index;
-  out << "<section class=\"frame" << (loop_start ? " loop" : "") << "\" data-step=\"" << index
+  const bool marked = step.contains("in_legal_set") && step["in_legal_set"].is_boolean();
+  const bool in_legal_set = marked && step["in_legal_set"].get<bool>();
+  out << "<section class=\"frame" << (loop_start ? " loop" : "")
+      << (marked ? (in_legal_set ? " in-l" : " out-l") : "") << "\" data-step=\"" << index
       << "\">\n<h3>step " << index << ": ";
   if (step["action"].is_null())
     out << "start state";
@@ -110,6 +128,15 @@ void write_frame(std::ostream& out, const Json& report, const catalogue::Picture
     out << " <span class=\"loop-note\">(the same state as step " << trace["loop_start"].dump()
         << ": the loop repeats forever)</span>";
   out << "</h3>\n";
+  // A stabilisation witness is read by where it is against L, and why (issue 17).
+  const std::string why = explanation(explain, report, step["state"]);
+  if (marked)
+    out << "<p class=\"legal\"><b class=\"" << (in_legal_set ? "in" : "out") << "\">"
+        << (in_legal_set ? "in L" : "outside L") << "</b> ("
+        << html_text(scalar_text(trace.value("legal_set", Json("L")))) << ")"
+        << (why.empty() ? "" : "; " + html_text(why)) << "</p>\n";
+  else if (!why.empty())
+    out << "<p class=\"legal\">" << html_text(why) << "</p>\n";
   const Json* previous = index == 0 ? nullptr : &steps[index - 1]["state"];
   const std::string picture_id = trace_id + "-" + std::to_string(index);
   if (picture) {
@@ -124,7 +151,8 @@ void write_frame(std::ostream& out, const Json& report, const catalogue::Picture
 }
 
 void write_trace(std::ostream& out, const Json& report, const catalogue::Picture& picture,
-                 const Json& trace, const std::string& trace_id) {
+                 const catalogue::Explain& explain, const Json& trace,
+                 const std::string& trace_id) {
   const Json& steps = trace["steps"];
   out << "<p>" << html_text(scalar_text(trace["role"])) << " ("
       << html_text(scalar_text(trace["kind"])) << "), " << trace["length"].dump() << " steps, "
@@ -135,13 +163,14 @@ void write_trace(std::ostream& out, const Json& report, const catalogue::Picture
          "<button class=\"all\">show all</button> <input class=\"slider\" type=\"range\" "
          "min=\"0\" max=\"0\" value=\"0\"/> <span class=\"status\"></span></p>\n";
   for (std::size_t i = 0; i < steps.size(); ++i)
-    write_frame(out, report, picture, trace, trace_id, i);
+    write_frame(out, report, picture, explain, trace, trace_id, i);
   out << "</div>\n";
 }
 
 } // namespace
 
-void write_html(std::ostream& out, const Json& report, const catalogue::Picture& picture) {
+void write_html(std::ostream& out, const Json& report, const catalogue::Picture& picture,
+                const catalogue::Explain& explain) {
   const std::string model = scalar_text(report["model"]);
   const std::string params = params_text(report["params"]);
   out << "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" lang=\"en\">\n<head>\n"
@@ -187,7 +216,7 @@ void write_html(std::ostream& out, const Json& report, const catalogue::Picture&
     out << "<h2>" << html_text(scalar_text(property["name"])) << ": "
         << html_text(scalar_text(property["verdict"])) << "</h2>\n<p>"
         << html_text(scalar_text(property["description"])) << "</p>\n";
-    write_trace(out, report, picture, property["trace"], "p" + std::to_string(number));
+    write_trace(out, report, picture, explain, property["trace"], "p" + std::to_string(number));
   }
   if (!any_trace)
     out << "<p>No property has a trace to show.</p>\n";

@@ -16,6 +16,9 @@
 namespace cli {
 
 // `report` is run_json(run, true) (report_json.hpp); `picture` the model's (may be empty).
-void write_html(std::ostream& out, const Json& report, const catalogue::Picture& picture = {});
+// `explain`, when the model has one, adds its line on each state to the frame; frames of a
+// trace with a legal set say whether the state is in it.
+void write_html(std::ostream& out, const Json& report, const catalogue::Picture& picture = {},
+                const catalogue::Explain& explain = {});
 
 } // namespace cli

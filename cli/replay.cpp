@@ -271,6 +271,12 @@ int command_replay(const catalogue::Catalogue& models, const std::string& model,
   const Json& traces = document["traces"];
   if (!traces.is_array())
     throw catalogue::UsageError(name + ": 'traces' is not a list");
+  if (traces.empty()) // replaying nothing would confirm nothing
+    throw catalogue::UsageError(
+        name + ": no trace to replay" +
+        (document.contains("witnesses") && !document["witnesses"].empty()
+             ? " (its witnesses are rounds of the round-level lemmas, not traces of the model)"
+             : ""));
   std::ostringstream report;
   for (const Json& trace : traces) {
     ++count;

@@ -77,7 +77,9 @@ Json trace_json(const tioa::StateLayout& layout, const checker::PropertyResult& 
   const checker::Trace& trace = *result.trace;
   Json steps = Json::array();
   const auto& variables = layout.variables();
-  for (const auto& step : trace.steps) {
+  const bool marked = result.trace_in_legal_set.size() == trace.steps.size();
+  for (std::size_t i = 0; i < trace.steps.size(); ++i) {
+    const checker::TraceStep& step = trace.steps[i];
     Json state = Json::object();
     const auto rendered = checker::render_state(layout, step.state.data());
     for (std::size_t v = 0; v < rendered.size(); ++v)
@@ -86,6 +88,8 @@ Json trace_json(const tioa::StateLayout& layout, const checker::PropertyResult& 
     item["action"] = action_json(step);
     item["time"] = step.time;
     item["state"] = std::move(state);
+    if (marked)
+      item["in_legal_set"] = static_cast<bool>(result.trace_in_legal_set[i]);
     steps.push_back(std::move(item));
   }
   Json out;
@@ -93,6 +97,8 @@ Json trace_json(const tioa::StateLayout& layout, const checker::PropertyResult& 
   out["kind"] = result.trace_kind;
   out["loop_start"] = trace.loop_start ? Json(*trace.loop_start) : Json(nullptr);
   out["length"] = trace.length();
+  if (marked)
+    out["legal_set"] = result.legal_set_name;
   out["steps"] = std::move(steps);
   return out;
 }
@@ -172,6 +178,10 @@ Json run_json(const ModelRun& run, bool with_trace) {
   out["variant"] = run.variant.empty() ? Json(nullptr) : Json(run.variant);
   if (!run.from.empty())
     out["from"] = run.from;
+  if (!run.start.empty())
+    out["start"] = run.start; // the start states were every state where it holds
+  if (!run.invariant.empty())
+    out["invariant"] = run.invariant;
   if (!run.quantum.empty()) {
     out["quantum"] = run.quantum;
     out["time_note"] = time_note(run.quantum); // once per report: it is the same for each

@@ -14,6 +14,7 @@
 
 #include "catalogue/registry.hpp"
 #include "cli/exit_status.hpp"
+#include "cli/report_json.hpp"
 #include "models/mc/curve_local.hpp"
 #include "models/mc/simulation.hpp"
 
@@ -22,7 +23,6 @@ namespace cli {
 namespace {
 
 using catalogue::UsageError;
-using Json = nlohmann::ordered_json;
 
 constexpr int max_side = 50; // as `round`; the paper's runs use m <= 20
 
@@ -221,12 +221,13 @@ void print_json(const Checked& c, const std::vector<mc::SimulationResult>& resul
                 const std::optional<mc::DominanceCheck>& claim,
                 const std::vector<std::string>& files) {
   Json root;
+  root["version"] = tool_version();
   root["setup"] = {{"e", c.setup.e},
                    {"robots", c.setup.robots},
                    {"start", "lower-right region"},
                    {"rho2", mc::to_string(c.setup.rho2)},
                    {"sigma", mc::to_string(c.setup.sigma)},
-                   {"b", "1"},
+                   {"b", 1},
                    {"nbh", static_cast<int>(c.setup.neighbourhood)}};
   Json rows = Json::array();
   for (const mc::SimulationResult& r : results)

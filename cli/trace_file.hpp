@@ -4,7 +4,8 @@
 //
 // {"version", "model", "params", "variant", ["from"], ["start"], ["invariant"],
 //  "traces": [{"property", "verdict", "role", "kind", "loop_start", "length",
-//              "steps": [{"action", "time", "state"}]}],
+//              ["last_time_outside"], ["legal_set"],
+//              "steps": [{"action", "time", "state", ["in_legal_set"]}]}],
 //  "witnesses": [{"property", "role", "kind", "claim", ...}]}
 // A step is as in the --json report (report_json.hpp): the action {"name", "params",
 // ["choice"], "text"} (null for the first state) and the state as variable -> value.

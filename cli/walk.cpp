@@ -1,6 +1,7 @@
 #include "cli/walk.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <iostream>
 #include <optional>
 #include <random>
@@ -114,6 +115,7 @@ int command_walk(const catalogue::Catalogue& models, const ModelRequest& request
     invariants.push_back(given_invariant(layout, settings.invariant));
   auto trace_out = open_report_file(settings.trace_out_path);
 
+  const auto began = std::chrono::steady_clock::now();
   std::mt19937_64 random(walk.seed);
   // --start gives the start states (every valuation where it holds), whatever --from says.
   const Draw first = draw_start(system, start ? "arbitrary" : walk.from, start, random);
@@ -171,6 +173,7 @@ int command_walk(const catalogue::Catalogue& models, const ModelRequest& request
   r.coverage = {checker::Starts::one, 1, std::nullopt, "the start states",
                 first.how + ", seed " + std::to_string(walk.seed)};
   r.time_unit = system.timed() ? "quanta" : "steps";
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   r.states = trace.steps.size();
   r.edges = trace.length();
   r.depth = static_cast<std::uint32_t>(trace.length());

@@ -175,26 +175,35 @@ FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& fa
   const std::size_t n = list.settings.size();
   std::vector<Tallies> per_setting(n, Tallies(lemma));
   std::atomic<std::size_t> next{0};
+  FamilyStop stop(options.limits);
+  struct Stopped {};
 
   auto work = [&] {
     std::vector<std::optional<Measurement>> out(lemma.claims.size());
-    for (std::size_t i; (i = next.fetch_add(1)) < n;) {
+    for (std::size_t i; !stop.stopped() && (i = next.fetch_add(1)) < n;) {
       const Setting& setting = list.settings[i];
       const mc::RoundSystem system = setting.system();
       const mc::Rational r3 = rho3(system);
       Tallies& tallies = per_setting[i];
-      const Coverage coverage = for_each_configuration(
-          setting, family.use_symmetry, [&](const Counts& counts, std::uint64_t) {
-            const mc::FixpointRun run = system.run_to_fixpoint(counts);
-            ++tallies.instances;
-            tallies.rounds += run.fixpoint_round;
-            const FixpointInstance instance{setting, system, counts, run, r3};
-            std::fill(out.begin(), out.end(), std::nullopt);
-            lemma.evaluate(instance, out);
-            for (std::size_t c = 0; c < out.size(); ++c)
-              if (out[c])
-                record(tallies.claims[c], instance, std::move(*out[c]));
-          });
+      Coverage coverage;
+      try {
+        coverage = for_each_configuration(
+            setting, family.use_symmetry, [&](const Counts& counts, std::uint64_t) {
+              if (!stop.next())
+                throw Stopped{};
+              const mc::FixpointRun run = system.run_to_fixpoint(counts);
+              ++tallies.instances;
+              tallies.rounds += run.fixpoint_round;
+              const FixpointInstance instance{setting, system, counts, run, r3};
+              std::fill(out.begin(), out.end(), std::nullopt);
+              lemma.evaluate(instance, out);
+              for (std::size_t c = 0; c < out.size(); ++c)
+                if (out[c])
+                  record(tallies.claims[c], instance, std::move(*out[c]));
+            });
+      } catch (const Stopped&) {
+        return;
+      }
       tallies.skipped = coverage.skipped;
     }
   };
@@ -243,6 +252,7 @@ FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& fa
   r.figures.emplace_back("instances checked", std::to_string(check.instances));
   r.figures.emplace_back("rounds run", std::to_string(check.rounds));
   report_claims(check);
+  stop.mark(r, check.instances);
   return check;
 }
 

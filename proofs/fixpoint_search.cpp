@@ -161,15 +161,29 @@ FixpointCheck search_fixpoint(const FixpointLemma& lemma, const FixpointSearchOp
   // between threads, then merged in sample order.
   constexpr std::size_t block = 256;
   std::vector<SampleRun> runs;
-  for (std::size_t first = 0; first < samples.size(); first += block) {
+  FamilyStop stop(options.limits);
+  std::uint64_t done = 0;
+  for (std::size_t first = 0; first < samples.size() && !stop.stopped(); first += block) {
     const std::size_t last = std::min(samples.size(), first + block);
     runs.assign(last - first, SampleRun{});
     std::atomic<std::size_t> next{first};
+    // A block the stop cut short keeps the samples before the first one not run, so that
+    // the samples checked are the first `done` in order.
+    std::atomic<std::size_t> cut{last};
     auto work = [&] {
-      for (std::size_t i; (i = next.fetch_add(1)) < last;)
+      for (std::size_t i; (i = next.fetch_add(1)) < last;) {
+        if (!stop.next()) {
+          std::size_t seen = cut.load();
+          while (i < seen && !cut.compare_exchange_weak(seen, i)) {
+          }
+          return;
+        }
         runs[i - first] = run_sample(lemma, samples[i], options.max_rounds);
+      }
     };
     run_on_threads(options.threads, work);
+    runs.resize(cut.load() - first);
+    done += runs.size();
     for (SampleRun& run : runs) {
       rounds += run.rounds;
       no_fixpoint += run.no_fixpoint ? 1 : 0;
@@ -190,7 +204,7 @@ FixpointCheck search_fixpoint(const FixpointLemma& lemma, const FixpointSearchOp
 
   FixpointCheck check;
   check.claims = std::move(tallies);
-  check.instances = samples.size();
+  check.instances = done;
   check.rounds = rounds;
   const ClaimVerdicts verdicts = start_result(
       check, lemma, std::chrono::duration<double>(Clock::now() - began).count(), options.threads);
@@ -234,6 +248,7 @@ FixpointCheck search_fixpoint(const FixpointLemma& lemma, const FixpointSearchOp
   if (!found.empty())
     r.figures.emplace_back("smallest counterexamples before shrinking", join(found, "; "));
   report_claims(check);
+  stop.mark(check.result, done);
   return check;
 }
 

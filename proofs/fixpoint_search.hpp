@@ -40,7 +40,8 @@ struct FixpointSearchOptions {
   mc::Rational rho1{1, 2};          // not used by assign; fixed
   std::size_t max_rounds = 100'000; // a run without a fixed point by then is reported
   bool shrink = true;
-  unsigned threads = 1; // the runs are split between threads; the same figures
+  unsigned threads = 1;                    // the runs are split between threads; the same figures
+  const checker::Limits* limits = nullptr; // the property's limits (family_stop.hpp)
 };
 
 // One sample: a setting and the counts M_0.

@@ -705,8 +705,10 @@ Lemma68Check check_lemma_6_8(const Lemma68Family& family, const CheckOptions& op
   const std::size_t items = family.rho1s.size() + dynamics.size();
   std::vector<Partial> parts(items);
   std::atomic<std::size_t> next{0};
+  FamilyStop stop(options.limits);
+  std::atomic<std::uint64_t> done{0};
   auto work = [&] {
-    for (std::size_t i = next++; i < items; i = next++) {
+    for (std::size_t i = next++; i < items && stop.next(); i = next++, ++done) {
       if (i < family.rho1s.size())
         check_matrices(family, family.rho1s[i], parts[i]);
       else
@@ -858,6 +860,7 @@ Lemma68Check check_lemma_6_8(const Lemma68Family& family, const CheckOptions& op
   check.note_statements("reported ");
   check.note_witnesses();
   r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  stop.mark(check.result, done);
   return check;
 }
 

@@ -296,24 +296,33 @@ LemmaCheck check_family(const RoundLemma& lemma, const Family& family,
   std::vector<Tallies> per_setting(n, Tallies(lemma));
   std::vector<std::uint64_t> incomplete(n, 0);
   std::atomic<std::size_t> next{0};
+  FamilyStop stop(options.limits);
+  struct Stopped {};
 
   auto work = [&] {
     std::vector<ClaimOutcome> scratch;
-    for (std::size_t i; (i = next.fetch_add(1)) < n;) {
+    for (std::size_t i; !stop.stopped() && (i = next.fetch_add(1)) < n;) {
       const Setting& setting = list.settings[i];
       const mc::RoundSystem system = setting.system();
       Tallies& tallies = per_setting[i];
-      const Coverage coverage = for_each_configuration(
-          setting, family.use_symmetry, [&](const Counts& counts, auto orbit) {
-            std::vector<mc::Flow> flows;
-            try {
-              flows = system.all_flows(counts, options.outcome_limit);
-            } catch (const mc::TooManyOutcomes&) {
-              ++incomplete[i];
-              return;
-            }
-            check_instance(lemma, setting, system, counts, orbit, flows, tallies, scratch);
-          });
+      Coverage coverage;
+      try {
+        coverage = for_each_configuration(
+            setting, family.use_symmetry, [&](const Counts& counts, auto orbit) {
+              if (!stop.next())
+                throw Stopped{};
+              std::vector<mc::Flow> flows;
+              try {
+                flows = system.all_flows(counts, options.outcome_limit);
+              } catch (const mc::TooManyOutcomes&) {
+                ++incomplete[i];
+                return;
+              }
+              check_instance(lemma, setting, system, counts, orbit, flows, tallies, scratch);
+            });
+      } catch (const Stopped&) {
+        return;
+      }
       tallies.skipped = coverage.skipped;
     }
   };
@@ -348,6 +357,7 @@ LemmaCheck check_family(const RoundLemma& lemma, const Family& family,
                              " outcomes and were not checked; " + check.result.message;
     }
   }
+  stop.mark(check.result, check.instances);
   return check;
 }
 
@@ -540,8 +550,9 @@ LemmaCheck search_random(const RoundLemma& lemma, const SearchOptions& options) 
   std::vector<std::string> curves = curve_names();
   curves.push_back("random");
   std::vector<ClaimOutcome> scratch;
+  FamilyStop stop(options.limits);
 
-  for (std::uint64_t sample = 0; sample < options.samples; ++sample) {
+  for (std::uint64_t sample = 0; sample < options.samples && stop.next(); ++sample) {
     Setting setting;
     setting.m = options.min_side + static_cast<int>(random.below(static_cast<std::uint64_t>(
                                        options.max_side - options.min_side + 1)));
@@ -622,8 +633,10 @@ LemmaCheck search_random(const RoundLemma& lemma, const SearchOptions& options) 
       {"samples", std::to_string(options.samples)},
       {"instances with sampled outcomes", std::to_string(tallies.sampled)},
   };
-  return finish(lemma, std::move(tallies), covered, std::move(figures), true, seconds_since(start),
-                1);
+  LemmaCheck check =
+      finish(lemma, std::move(tallies), covered, std::move(figures), true, seconds_since(start), 1);
+  stop.mark(check.result, check.instances);
+  return check;
 }
 
 } // namespace proofs

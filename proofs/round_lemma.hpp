@@ -28,10 +28,12 @@
 #include <tuple>
 #include <vector>
 
+#include "checker/options.hpp"
 #include "checker/result.hpp"
 #include "models/mc/round.hpp"
 #include "proofs/claim_tally.hpp"
 #include "proofs/family.hpp"
+#include "proofs/family_stop.hpp"
 
 namespace proofs {
 
@@ -119,6 +121,8 @@ template <class Work> void run_on_threads(unsigned threads, Work& work) {
 struct CheckOptions {
   unsigned threads = 1;                // settings are split between threads; same results
   std::size_t outcome_limit = 100'000; // all_flows limit per instance
+  // The property's limits (each instance one state); none: the whole family (family_stop.hpp).
+  const checker::Limits* limits = nullptr;
 };
 
 // Every instance of the family, every outcome of its round.
@@ -139,6 +143,7 @@ struct SearchOptions {
   std::size_t outcome_limit = 4'096;
   std::size_t sampled_outcomes = 64;
   bool shrink = true;
+  const checker::Limits* limits = nullptr; // the property's limits (family_stop.hpp)
 };
 
 // A seeded random search; its verdict is never a plain "holds" (see README).

@@ -510,21 +510,25 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
   const std::size_t jobs = positions.samples > 0 ? samples.size() : settings.size();
   std::vector<Tallies> per_setting(jobs, fresh());
   std::atomic<std::size_t> next{0};
+  // The count-level check shares the property's limits: when it used them up, no run
+  // with positions starts.
+  FamilyStop stop(options.limits);
   auto work = [&] {
-    for (std::size_t i; positions.samples > 0 && (i = next.fetch_add(1)) < jobs;) {
+    for (std::size_t i; positions.samples > 0 && (i = next.fetch_add(1)) < jobs && stop.next();) {
       const PositionSetting& setting = settings[samples[i].setting];
       const mc::PositionSystem system = system_of(setting);
       const Outcome outcome = run_one(system, samples[i].robots, setting.m, positions);
       record(per_setting[i], reading_of(setting), setting, samples[i].setting, samples[i].robots,
              outcome);
     }
-    for (std::size_t i; positions.samples == 0 && (i = next.fetch_add(1)) < jobs;) {
+    for (std::size_t i;
+         positions.samples == 0 && !stop.stopped() && (i = next.fetch_add(1)) < jobs;) {
       const PositionSetting& setting = settings[i];
       const mc::PositionSystem system = system_of(setting);
       const std::size_t reading = reading_of(setting);
       Tallies& tallies = per_setting[i];
       Counts counts(system.curve().size(), 0);
-      while (true) {
+      while (stop.next()) {
         const std::vector<mc::Robot> robots = place(system.curve(), counts);
         const Outcome outcome = run_one(system, robots, setting.m, positions);
         record(tallies, reading, setting, i, robots, outcome);
@@ -661,6 +665,7 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
     r.trace_role = "counterexample";
     r.trace_kind = "round";
   }
+  stop.mark(r, check.runs);
   return check;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // The structured form of the counterexamples that are not traces of an automaton (a round
-// of mc-round's lemmas, a run to the fixed point, a matrix of Lemma 6.8): JSON objects that
-// --json reports (`counterexamples`) and --trace-out writes. Grids are lists of rows, row 0
-// at the top as the text reports print them; a region is [row, col]; rationals are strings
+// of mc-round's lemmas, a run to the fixed point, a matrix of Lemma 6.8, a run with
+// positions): JSON objects that --json reports (`witnesses`) and --trace-out writes. Grids are
+// lists of rows, row 0 at the top as the text reports print them; a region is [row, col]; rationals
+// are strings
 // ("9/10").
 
 #include <nlohmann/json.hpp>

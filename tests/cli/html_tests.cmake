@@ -48,6 +48,9 @@ foreach(variant IN ITEMS "" _chromium)
                        "counterexample \\(lasso\\), 15 steps, 16 frames"
                        "step 0: start state, t = 0 <span class=\"loop-note\">\\(the loop starts here\\)"
                        "step 1: after <code>step\\(0\\)</code>, t = 1"
+                       # each frame in or outside L, and the privileged processes (issue 17)
+                       "<section class=\"frame loop out-l\" data-step=\"0\">"
+                       "<b class=\"out\">outside L</b> \\(exactly one privileged\\); privileged: P[0-9, P]+</p>"
                        "step 15: after <code>step\\([0-9]\\)</code>, t = 15 <span class=\"loop-note\">\\(the same state as step 0"
                        "<tr class=\"changed\"><td>x\\[0\\]</td><td>1 <span class=\"was\">\\(was 0\\)</span>")
   html_test(html_vlayer${variant} EXIT 0 PAGE ${html_out}/vlayer${variant}.html ${chromium}

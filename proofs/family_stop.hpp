@@ -1,0 +1,86 @@
+#pragma once
+// When a check over a family of instances, or a random search, stops before its end: the
+// property's limits (checker/options.hpp: its deadline and --max-seconds, and its states
+// budget, each instance counting as one state) and a stop requested from outside (SIGINT,
+// SIGTERM). Shared by the threads of one check; each asks next() before an instance.
+//
+// A check that stops keeps what it found: a violation is still a violation (its
+// counterexample is real); a check that found none is incomplete, "holds on the N instances
+// checked" (stopped_result()).
+
+#include <atomic>
+#include <chrono>
+#include <string>
+
+#include "checker/interrupt.hpp"
+#include "checker/options.hpp"
+#include "checker/result.hpp"
+
+namespace proofs {
+
+class FamilyStop {
+public:
+  explicit FamilyStop(const checker::Limits* limits = nullptr)
+      : limits_(limits), started_(std::chrono::steady_clock::now()) {}
+
+  // False when the check must stop (and from then on); true counts one more instance.
+  bool next() {
+    if (stopped_.load(std::memory_order_relaxed))
+      return false;
+    if (checker::interrupted())
+      return stop(checker::StopReason::interrupted);
+    if (limits_) {
+      const double elapsed =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+      if (limits_->out_of_time(elapsed))
+        return stop(checker::StopReason::time_limit);
+      if (limits_->states_exhausted() ||
+          (limits_->max_states > 0 &&
+           instances_.load(std::memory_order_relaxed) >= limits_->max_states))
+        return stop(checker::StopReason::state_limit);
+      limits_->spend_states(1);
+    }
+    instances_.fetch_add(1, std::memory_order_relaxed);
+    return true;
+  }
+
+  bool stopped() const { return stopped_.load(std::memory_order_relaxed); }
+  checker::StopReason reason() const { return reason_.load(std::memory_order_relaxed); }
+
+  // After the check: a result that holds becomes incomplete when the check stopped, saying
+  // why and on how many instances it held; `of` is the family's size when known.
+  void mark(checker::PropertyResult& result, std::uint64_t checked) const {
+    if (!stopped())
+      return;
+    result.notes.push_back(std::string("stopped early: ") + checker::describe(reason()) +
+                           " after " + std::to_string(checked) + " instances");
+    if (result.verdict != checker::Verdict::holds)
+      return;
+    result.verdict = checker::Verdict::incomplete;
+    // (Its message said "holds ... on every run of the family": no longer so.)
+    result.message = std::string(checker::describe(reason())) + ": holds on the " +
+                     std::to_string(checked) +
+                     " instances checked before it, not on the whole "
+                     "family";
+    result.coverage.starts = checker::Starts::sampled;
+    result.coverage.count = checked;
+    result.coverage.of = std::nullopt;
+    result.coverage.chosen = "the first ones, until the check stopped";
+  }
+
+private:
+  bool stop(checker::StopReason reason) {
+    bool expected = false;
+    if (stopped_.compare_exchange_strong(expected, true))
+      reason_.store(reason, std::memory_order_relaxed);
+    return false;
+  }
+
+  const checker::Limits* limits_;
+  std::chrono::steady_clock::time_point started_;
+  std::atomic<bool> stopped_{false};
+  std::atomic<checker::StopReason> reason_{checker::StopReason::finished};
+  std::atomic<std::uint64_t> instances_{0};
+};
+
+} // namespace proofs
