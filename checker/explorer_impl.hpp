@@ -57,7 +57,7 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   Discovery discovery;
   // The memory limit counts the store, the parents, the edges, the discovery keys of the
   // level being built, the workers' buffers and (fingerprint store) the two levels' states.
-  MemoryBudget budget(limits.max_memory_bytes, [&] {
+  MemoryBudget budget(memory_left(limits), [&] {
     std::size_t bytes =
         ex.memory_bytes() + discovery.bytes(ex.store.size()) + (states ? states->bytes() : 0);
     for (const Worker& w : workers)

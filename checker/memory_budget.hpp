@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "checker/mapped_memory.hpp"
+#include "checker/options.hpp"
 
 namespace checker {
 
@@ -33,6 +34,15 @@ template <class T> void grow(std::vector<T>& v, std::size_t more) {
   if (v.capacity() - v.size() < more)
     v.reserve(std::max({2 * v.capacity(), v.size() + more, std::size_t{64}}));
 }
+
+// The process's resident memory in bytes (/proc/self/statm; 0 where it cannot be read).
+std::uint64_t resident_bytes();
+
+// The memory limit of the next run of a property: max_memory_bytes less what the property's
+// earlier runs still hold (the growth of the resident memory since it started); 0 when there
+// is no limit, and at least 1 byte (a run with nothing left stops on the memory limit at
+// once).
+std::uint64_t memory_left(const Limits& limits);
 
 class MemoryBudget {
 public:

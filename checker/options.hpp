@@ -23,6 +23,10 @@ struct Limits {
   std::uint64_t max_states = 0;
   double max_seconds = 0;
   std::uint64_t max_memory_bytes = 0;
+  // The process's resident memory when the property started (run_property sets it; 0:
+  // unknown): what its earlier runs still hold counts against max_memory_bytes too
+  // (memory_left, memory_budget.hpp).
+  std::uint64_t resident_base = 0;
   // When the time of the whole property (or suite) is up: run_property sets it from
   // max_seconds, so that a property made of several explorations spends max_seconds in
   // all, not in each (issue 17). None: max_seconds bounds each exploration alone.

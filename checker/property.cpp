@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "checker/memory_budget.hpp"
+
 namespace checker {
 
 const char* to_string(PropertyKind kind) {
@@ -62,6 +64,8 @@ PropertyResult run_property(const Automaton& system, const Property& property,
     named.limits.states_budget = std::make_shared<StatesBudget>();
     named.limits.states_budget->max = named.limits.max_states;
   }
+  if (named.limits.max_memory_bytes > 0 && named.limits.resident_base == 0)
+    named.limits.resident_base = resident_bytes();
   PropertyResult result;
   switch (property.kind) {
   case PropertyKind::invariant:

@@ -353,7 +353,10 @@ int command_replay(const catalogue::Catalogue& models, const std::string& model,
   } else {
     std::cout << "replay " << model << "  " << format_params(run.params) << "  (" << name << ")\n\n"
               << report.str() << "\nsummary: " << count << " trace" << (count == 1 ? "" : "s")
-              << ", " << good << " replay and show what they claim\n";
+              << ", " << good
+              << (good == 1 ? " replays and shows what it claims"
+                            : " replay and show what they claim")
+              << "\n";
   }
   return good == count ? all_hold : some_violated;
 }

@@ -1,6 +1,7 @@
 #include "cli/round.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "catalogue/registry.hpp"
+#include "checker/interrupt.hpp"
 #include "cli/exit_status.hpp"
 #include "cli/report_json.hpp"
 #include "support/text_file.hpp"
@@ -229,11 +231,24 @@ int command_round(const RoundRequest& request) {
   if (request.to_fixpoint) {
     mc::RunOptions options;
     options.max_rounds = request.max_rounds;
+    const auto began = std::chrono::steady_clock::now();
+    std::string why;
+    options.stop = [&] {
+      if (checker::stop_requested())
+        why = "interrupted";
+      else if (request.max_seconds > 0 &&
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count() >
+                   request.max_seconds)
+        why = "time limit reached (--max-seconds)";
+      return !why.empty();
+    };
+    options.stop_reason = "stopped";
     mc::FixpointRun run;
     try {
       run = system.run_to_fixpoint(config->robots, options);
     } catch (const mc::RoundLimitReached& e) {
-      std::cerr << "tioa-check: incomplete: " << e.what() << " (raise --max-rounds)" << std::endl;
+      std::cerr << "tioa-check: incomplete: " << (why.empty() ? "" : why + ": ") << e.what()
+                << (why.empty() ? " (raise --max-rounds)" : "") << std::endl;
       return some_incomplete;
     }
     outcome.rounds = std::move(run.rounds);
@@ -269,6 +284,11 @@ Command round_command() {
                             "this round (default 100000)")
                 ->type_name("N")
                 ->check(whole_number());
+            command
+                .add_option("--max-seconds", request->max_seconds,
+                            "with --to-fixpoint: give up (exit 3) after S seconds (0: no limit)")
+                ->type_name("S")
+                ->check(CLI::NonNegativeNumber);
             return [request] { return command_round(*request); };
           }};
 }

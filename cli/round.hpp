@@ -17,6 +17,7 @@ struct RoundRequest {
   bool json = false;
   bool to_fixpoint = false;
   std::size_t max_rounds = 100'000;
+  double max_seconds = 0; // --to-fixpoint: give up after this long (0: never)
 };
 
 // A configuration file: {"m", "nbh", "k", "rho1", "rho2", "q", "robots"} (README of

@@ -217,6 +217,9 @@ FixpointRun RoundSystem::run_to_fixpoint(const Counts& start, const RunOptions& 
                                   " rounds (the counts still change in round " + std::to_string(t) +
                                   ")",
                               t);
+    if (options.stop && options.stop())
+      throw RoundLimitReached(
+          options.stop_reason + " in round " + std::to_string(t) + ", before the fixed point", t);
     auto active = [&](RegionId h) { return current[h] >= 1; };
     for (const Transfer& move : f.transfers)
       for (RegionId h : {move.from, move.to})

@@ -18,7 +18,9 @@
 //   (which robots) are read from the Flow of the round.
 
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "models/mc/assign.hpp"
@@ -80,6 +82,10 @@ public:
 struct RunOptions {
   std::size_t max_rounds = 100'000; // the fixed point must be reached by round max_rounds
   bool keep_history = true;         // keep every M_t and every Flow (else only the last M)
+  // Asked before each round when set: true gives up (RoundLimitReached, saying `stop_reason`)
+  // — a time limit or an interrupt of the command line.
+  std::function<bool()> stop = {};
+  std::string stop_reason = "stopped";
 };
 
 // A run from M_0 to its fixed point M_F (the first round whose counts the next round

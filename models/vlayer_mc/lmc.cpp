@@ -1,5 +1,7 @@
 #include "models/vlayer_mc/lmc.hpp"
 
+#include <algorithm>
+#include <memory>
 #include <vector>
 
 #include "models/vlayer_mc/names.hpp"
@@ -38,42 +40,47 @@ tioa::StartSet reset_family(const VlConfig& c, const tioa::Automaton& layer) {
   for (int u = 0; u < regions; ++u)
     vsa_clocks.push_back(var(names::vn_name(u) + ".clock"));
 
+  // The family is built state by state as it is enumerated, never held whole: with three
+  // robots on a 3x3 grid it has millions of states, and the explorer that takes them checks
+  // its limits (time, memory, states) as they come.
   const std::uint32_t words = layer.words();
-  std::vector<tioa::Word> initial(words + 1, 0), all;
-  tioa::State s(initial.data(), 0);
+  auto initial = std::make_shared<std::vector<tioa::Word>>(words + 1, 0);
+  tioa::State s(initial->data(), 0);
   for (const auto& v : layer.layout().variables())
     s.set_code(v.slot(), v.initial_code.value_or(0)); // Fail's `failed`: false
   const std::uint64_t count = reset_family_size(c);
-  all.reserve(count * words);
-  std::vector<tioa::Word> buffer = initial;
-  for (std::uint64_t index = 0; index < count; ++index) {
-    buffer = initial;
-    tioa::State t(buffer.data(), 0);
-    std::uint64_t rest = index;
-    for (const Robot& r : robots) {
-      const int point = static_cast<int>(rest % static_cast<std::uint64_t>(points));
-      rest /= static_cast<std::uint64_t>(points);
-      const bool known = rest % 2 == 1;
-      rest /= 2;
-      t.set(r.loc, point);
-      if (known) {
-        t.set(r.x, point);
-        t.set(r.target, point);
-        t.set(r.v, zero_velocity);
-        t.set(r.vel, zero_velocity);
-        t.set(r.clock, 0);
-        t.set(r.reg, lattice.region_of(point));
+  const std::uint32_t bits = layer.layout().bits();
+  return tioa::StartSet(describe_reset_family(c), [=](tioa::Word* dst, std::uint32_t base,
+                                                      const tioa::StartSet::Visit& visit) {
+    std::vector<tioa::Word> buffer(initial->size());
+    for (std::uint64_t index = 0; index < count; ++index) {
+      std::copy(initial->begin(), initial->end(), buffer.begin());
+      tioa::State t(buffer.data(), 0);
+      std::uint64_t rest = index;
+      for (const Robot& r : robots) {
+        const int point = static_cast<int>(rest % static_cast<std::uint64_t>(points));
+        rest /= static_cast<std::uint64_t>(points);
+        const bool known = rest % 2 == 1;
+        rest /= 2;
+        t.set(r.loc, point);
+        if (known) {
+          t.set(r.x, point);
+          t.set(r.target, point);
+          t.set(r.v, zero_velocity);
+          t.set(r.vel, zero_velocity);
+          t.set(r.clock, 0);
+          t.set(r.reg, lattice.region_of(point));
+        }
       }
+      for (const auto& clock : vsa_clocks) {
+        if (rest % 2 == 1)
+          t.set(clock, 0);
+        rest /= 2;
+      }
+      tioa::copy_bits(dst, base, buffer.data(), 0, bits);
+      visit();
     }
-    for (const auto& clock : vsa_clocks) {
-      if (rest % 2 == 1)
-        t.set(clock, 0);
-      rest /= 2;
-    }
-    all.insert(all.end(), buffer.begin(), buffer.begin() + words);
-  }
-  return tioa::StartSet::listed(layer.layout().bits(), words, std::move(all),
-                                describe_reset_family(c));
+  });
 }
 
 } // namespace vlayer_mc

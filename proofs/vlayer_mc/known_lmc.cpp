@@ -13,7 +13,7 @@ using tioa::Word;
 
 KnownLmc::KnownLmc(const VlConfig& c, const tioa::Automaton& layer,
                    const checker::ExploreOptions& o, const tioa::StatePredicate& stop_at)
-    : words_(layer.words()), family_{layer.words(), {}} {
+    : words_(layer.words()) {
   for (int p = 0; p < c.robots; ++p)
     nodes_.push_back(node(layer, names::cn_name(p) + "."));
   for (int u = 0; u < c.lattice().regions(); ++u)
@@ -39,16 +39,24 @@ KnownLmc::KnownLmc(const VlConfig& c, const tioa::Automaton& layer,
     guarded(at("VBcast.vn_mask", u), {at("VBcast.vn_age", u), at("VBcast.vn_count", u)});
   for (int i = 0; i < regions * robots; ++i)
     guarded(at("VBcast.tu_pending", i), {at("VBcast.tu_age", i), at("VBcast.tu_target", i)});
-  std::vector<Word> buffer(words_ + 1, 0);
-  reset_family(c, layer).enumerate(buffer.data(), 0, [&] {
-    for (std::uint64_t mask = 0; mask < (std::uint64_t{1} << nodes_.size()); ++mask) {
-      std::vector<Word> s(buffer.begin(), buffer.end() - 1); // `buffer` is the enumeration's
-      tioa::State state(s.data(), 0);
-      for (std::size_t n = 0; n < nodes_.size(); ++n)
-        state.set_code(nodes_[n].failed, (mask >> n) & 1);
-      family_.data.insert(family_.data.end(), s.begin(), s.end());
-    }
-  });
+  // Built state by state as the explorer takes them (its limits hold there), never whole.
+  const tioa::StartSet reset = reset_family(c, layer);
+  std::vector<tioa::Slot> failed;
+  for (const Node& n : nodes_)
+    failed.push_back(n.failed);
+  family_size_ = reset_family_size(c) << nodes_.size();
+  family_ = tioa::StartSet(
+      "the reset family with every combination of failed nodes",
+      [reset, failed](Word* dst, std::uint32_t base, const tioa::StartSet::Visit& visit) {
+        reset.enumerate(dst, base, [&] {
+          for (std::uint64_t mask = 0; mask < (std::uint64_t{1} << failed.size()); ++mask) {
+            tioa::State state(dst, base);
+            for (std::size_t n = 0; n < failed.size(); ++n)
+              state.set_code(failed[n], (mask >> n) & 1);
+            visit();
+          }
+        });
+      });
   const tioa::Automaton from = from_family(layer);
   const tioa::SuccessorGenerator generator(from);
   checker::ExploreHooks hooks;
@@ -62,8 +70,7 @@ KnownLmc::KnownLmc(const VlConfig& c, const tioa::Automaton& layer,
 }
 
 tioa::Automaton KnownLmc::from_family(const tioa::Automaton& layer) const {
-  return tioa::Start(layer, family_.start(layer, "the reset family with every combination of "
-                                                 "failed nodes"));
+  return tioa::Start(layer, family_);
 }
 
 bool KnownLmc::contains(const tioa::State& s) const {

@@ -32,7 +32,7 @@ public:
 
   bool complete() const { return ex_->complete(); } // false: a limit was hit
   std::uint64_t size() const { return ex_->store.size(); }
-  std::uint64_t family_size() const { return family_.size(); }
+  std::uint64_t family_size() const { return family_size_; }
   // The exploration of the classes; its parents link representatives, not a trace.
   const checker::Exploration& exploration() const { return *ex_; }
   // `layer` started in the reset family with every combination of failed nodes.
@@ -59,7 +59,8 @@ private:
   std::vector<Node> nodes_;
   std::vector<Guarded> slots_;
   std::vector<std::pair<tioa::Slot, tioa::Slot>> velocities_; // RW.vel[p], RW.loc[p]
-  StateList family_;
+  tioa::StartSet family_; // lazy: each state built as it is enumerated
+  std::uint64_t family_size_ = 0;
   std::shared_ptr<checker::Exploration> ex_;
 };
 
