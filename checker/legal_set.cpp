@@ -20,18 +20,20 @@ PropertyResult check_legal_set(const Automaton& system, const StatePredicate& le
   // L is found among every valuation, most of which may be outside it (token-ring N=9, K=9:
   // 585 members among 9^9): the limits are checked there too, not only at its members.
   std::string limit;
+  // Sets `limit` when the run must stop (a signal, the time limit); true then.
+  const auto out_of_limits = [&] {
+    if (interrupted())
+      limit = "interrupted";
+    else if (options.limits.out_of_time(progress.elapsed()))
+      limit = "time limit reached";
+    return !limit.empty();
+  };
   std::uint64_t tried = 0;
   const tioa::StartSet members = tioa::StartSet::satisfying(
       system.layout(),
       [&](const tioa::State& s) {
-        if ((++tried & 0xffff) == 0) {
-          if (interrupted())
-            limit = "interrupted";
-          else if (options.limits.out_of_time(progress.elapsed()))
-            limit = "time limit reached";
-          if (!limit.empty())
-            throw StopEnumeration{};
-        }
+        if ((++tried & 0xffff) == 0 && out_of_limits())
+          throw StopEnumeration{};
         return legal(s);
       },
       "the legal set");
@@ -62,13 +64,9 @@ PropertyResult check_legal_set(const Automaton& system, const StatePredicate& le
         throw StopEnumeration{};
       if ((r.states & 0xfff) == 0) {
         progress.update(r.states, 0, 0);
-        if (interrupted())
-          limit = "interrupted";
-        else if (options.limits.out_of_time(progress.elapsed()))
-          limit = "time limit reached";
+        if (out_of_limits())
+          throw StopEnumeration{};
       }
-      if (!limit.empty())
-        throw StopEnumeration{};
     });
   } catch (const StopEnumeration&) {
   }

@@ -170,7 +170,7 @@ const char* tool_version() {
   return TIOA_CHECK_VERSION;
 }
 
-Json run_json(const ModelRun& run, bool with_trace) {
+Json run_header_json(const ModelRun& run) {
   Json out;
   out["version"] = tool_version();
   out["model"] = run.model;
@@ -182,6 +182,11 @@ Json run_json(const ModelRun& run, bool with_trace) {
     out["start"] = run.start; // the start states were every state where it holds
   if (!run.invariant.empty())
     out["invariant"] = run.invariant;
+  return out;
+}
+
+Json run_json(const ModelRun& run, bool with_trace) {
+  Json out = run_header_json(run);
   if (!run.quantum.empty()) {
     out["quantum"] = run.quantum;
     out["time_note"] = time_note(run.quantum); // once per report: it is the same for each

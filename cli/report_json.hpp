@@ -30,6 +30,10 @@ Json params_json(const OrderedParams& params);
 // The version of tioa-check that wrote a report (the JSON field `version`).
 const char* tool_version();
 
+// {"version", "model", "params", "variant", ["from"], ["start"], ["invariant"]}: how a run
+// began, the head of the report and of the trace file.
+Json run_header_json(const ModelRun& run);
+
 Json run_json(const ModelRun& run, bool with_trace);
 
 } // namespace cli

@@ -64,17 +64,7 @@ std::uint64_t code_of(const tioa::VariableInfo& variable, const Json& value,
 } // namespace
 
 Json trace_document(const ModelRun& run) {
-  Json out;
-  out["version"] = tool_version();
-  out["model"] = run.model;
-  out["params"] = params_json(run.params);
-  out["variant"] = run.variant.empty() ? Json(nullptr) : Json(run.variant);
-  if (!run.from.empty())
-    out["from"] = run.from;
-  if (!run.start.empty())
-    out["start"] = run.start;
-  if (!run.invariant.empty())
-    out["invariant"] = run.invariant;
+  Json out = run_header_json(run);
   Json traces = Json::array();
   Json witnesses = Json::array();
   for (const checker::PropertyResult& r : run.results) {
