@@ -38,7 +38,8 @@ constexpr std::uint64_t start_tries = 1'000'000;
 
 struct Draw {
   std::vector<Word> state;
-  std::string how; // how it was chosen, for the coverage line
+  std::string how;                 // how it was chosen, for the coverage line
+  std::optional<std::uint64_t> of; // how many start states it was drawn among, when known
 };
 
 // A random valuation of every variable (code ⊥ included where a variable has it).
@@ -60,8 +61,10 @@ Draw draw_start(const tioa::Automaton& system, const std::string& from,
     for (std::uint64_t i = 0; i < start_tries && !checker::stop_requested(); ++i) {
       std::vector<Word> state = random_valuation(layout, random);
       if (!start || start(tioa::State(state.data(), 0)))
-        return {std::move(state), start ? "a valuation drawn at random that satisfies --start"
-                                        : "a valuation drawn at random"};
+        return {std::move(state),
+                start ? "a valuation drawn at random that satisfies --start"
+                      : "a valuation drawn at random",
+                std::nullopt};
     }
     throw catalogue::UsageError("--start: none of " + std::to_string(start_tries) +
                                 " random valuations satisfies it (fix more variables)");
@@ -84,10 +87,12 @@ Draw draw_start(const tioa::Automaton& system, const std::string& from,
   if (chosen.empty())
     throw catalogue::UsageError(start ? "no start state satisfies --start"
                                       : "the model has no start state");
-  return {std::move(chosen),
-          seen == start_draw_limit
-              ? "drawn at random among the first " + std::to_string(seen) + " start states"
-              : "drawn at random among the " + std::to_string(seen) + " start states"};
+  if (seen == start_draw_limit || checker::stop_requested())
+    return {std::move(chosen),
+            "drawn at random among the first " + std::to_string(seen) + " start states",
+            std::nullopt};
+  return {std::move(chosen), "drawn at random among the " + std::to_string(seen) + " start states",
+          seen};
 }
 
 struct Successor {
@@ -170,7 +175,7 @@ int command_walk(const catalogue::Catalogue& models, const ModelRequest& request
   run.start = settings.start;
   run.invariant = settings.invariant;
   checker::PropertyResult r;
-  r.coverage = {checker::Starts::one, 1, std::nullopt, "the start states",
+  r.coverage = {checker::Starts::one, 1, first.of, "the start states",
                 first.how + ", seed " + std::to_string(walk.seed)};
   r.time_unit = system.timed() ? "quanta" : "steps";
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
