@@ -37,15 +37,14 @@ struct Limits {
   std::shared_ptr<StatesBudget> states_budget;
 
   // The state limit of the next run: max_states, or what the property's budget has left if
-  // that is less; 0 means no limit. exhausted() when nothing is left.
+  // that is less; 0 means no limit, so a run asks states_exhausted() first (a spent budget
+  // also gives 0).
   std::uint64_t states_left() const {
     std::uint64_t left = max_states;
     if (states_budget && states_budget->max > 0) {
       const std::uint64_t spent = states_budget->spent.load(std::memory_order_relaxed);
       const std::uint64_t rest = spent >= states_budget->max ? 0 : states_budget->max - spent;
       left = left == 0 ? rest : std::min(left, rest);
-      if (rest == 0)
-        return 0;
     }
     return left;
   }
