@@ -215,6 +215,12 @@ bool Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
         }
         if (level.signals.out_of_memory.load(std::memory_order_relaxed) || level.gate.stopped())
           return false;
+        // What the budget does not see (the model's memos, the allocator's slack) shows in
+        // the resident memory.
+        if (((id - begin) & 16383) == 16383 && resident_over_limit(level.limits)) {
+          level.signals.out_of_memory = true;
+          return false;
+        }
       }
       const Word* state = level.frontier(id);
       if (!expands(hooks, state))

@@ -56,10 +56,16 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   std::vector<Worker> workers(ex.threads, Worker(generator.words()));
   Discovery discovery;
   // The memory limit counts the store, the parents, the edges, the discovery keys of the
-  // level being built, the workers' buffers and (fingerprint store) the two levels' states.
+  // level being built, the workers' buffers, (fingerprint store) the two levels' states,
+  // and, while several workers build a level, what its renumbering will need at least
+  // (level_end.hpp).
+  bool concurrent = false;                // the level being expanded has several workers
+  StateId level_begin = 0, level_end = 0; // its frontier
   MemoryBudget budget(memory_left(limits), [&] {
     std::size_t bytes =
         ex.memory_bytes() + discovery.bytes(ex.store.size()) + (states ? states->bytes() : 0);
+    if (concurrent)
+      bytes += renumbering_bytes(ex.store.size() - level_end, level_end - level_begin);
     for (const Worker& w : workers)
       bytes += w.bytes();
     return bytes;
@@ -89,7 +95,6 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   // workers wait at the gate.
   // A worker alone writes the parents as it inserts: room for as many as the store.
   auto parents_room = [&] { return ex.store.id_limit() - ex.parent.size(); };
-  bool concurrent = false; // the level being expanded has several workers
   auto grow_store = [&] {
     const std::uint64_t more = std::max<std::uint64_t>(ex.store.size() / 8, 4096);
     if (!budget.fits(ex.store.room_bytes(more) +
@@ -115,6 +120,8 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
     states->next_level(end);
   while (begin < end && !stop) {
     const StateId first = end;
+    level_begin = begin;
+    level_end = end;
     std::optional<StopReason> level_stop;
     for (std::size_t used = workers_for(end - begin, workers.size());;) {
       concurrent = used > 1;
@@ -138,6 +145,7 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
         used = 1;
         continue;
       }
+      concurrent = false; // (finish_level asks for the renumbering's memory itself)
       level_stop = finish_level(active, level, ex, records_edges(hooks), budget);
       break;
     }

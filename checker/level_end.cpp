@@ -5,16 +5,9 @@
 
 namespace checker {
 
-namespace {
-
-// What renumbering a level of `count` states allocates (the order, the new ids, the
-// store's slots and a copy of the level's states).
-std::size_t renumbering_bytes(std::uint64_t count, std::uint64_t parents, std::uint32_t words) {
-  return Discovery::order_bytes(count, parents) +
-         count * (2 * sizeof(StateId) + words * sizeof(Word));
+std::size_t renumbering_bytes(std::uint64_t count, std::uint64_t parents) {
+  return Discovery::order_bytes(count, parents) + count * 2 * sizeof(StateId) + count / 8 + 64;
 }
-
-} // namespace
 
 std::optional<StopReason> finish_level(std::span<const Worker> workers, const Level& level,
                                        Exploration& ex, bool record_edges, MemoryBudget& budget) {
@@ -34,9 +27,11 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
   std::vector<StateId> order;
   if (level.concurrent()) { // (one worker inserted in key order and wrote the parents)
     // The level's holes must go whatever the memory limit says; past it, the run stops.
-    const std::size_t bytes = renumbering_bytes(count, level.end - level.begin, ex.store.words()) +
+    // The states move through a copy of the level when it fits, else one at a time.
+    const std::size_t bytes = renumbering_bytes(count, level.end - level.begin) +
                               (level.states ? level.states->reorder_bytes(count) : 0);
-    if (!budget.fits(bytes)) {
+    const bool in_place = !budget.fits(bytes + ex.store.reorder_copy_bytes(first));
+    if (in_place && !budget.fits(bytes)) {
       budget.note(budget.held() + bytes);
       stop = StopReason::memory_limit;
     }
@@ -47,7 +42,7 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
     if (level.states)
       level.states->reorder(order, count);
     count = order.size();
-    ex.store.reorder(first, order, discovery.slots());
+    ex.store.reorder(first, order, discovery.slots(), in_place);
     if (!budget.grow_within(ex.parent, count))
       return StopReason::memory_limit;
     for (std::size_t i = 0; i < count; ++i)

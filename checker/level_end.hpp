@@ -24,6 +24,12 @@
 
 namespace checker {
 
+// What renumbering a level of `count` states (holes included) after `parents` frontier
+// states holds at least, when its states move in place: the order, the new ids, the
+// store's slots and the store's bit per state. The explorer counts it as held while a
+// level with several workers grows, so that the level's end fits in the memory limit.
+std::size_t renumbering_bytes(std::uint64_t count, std::uint64_t parents);
+
 // Why the run stops after this level, if it does: a target found, the state limit, or
 // the memory limit (met while the store grew or the level was numbered).
 std::optional<StopReason> finish_level(std::span<const Worker> workers, const Level& level,

@@ -36,7 +36,13 @@ template <class T> void grow(std::vector<T>& v, std::size_t more) {
 }
 
 // The process's resident memory in bytes (/proc/self/statm; 0 where it cannot be read).
+// It does not allocate, so that the explorer's workers may ask it.
 std::uint64_t resident_bytes();
+
+// Whether the property holds more than its memory limit: the growth of the resident memory
+// since it started, which counts what no budget sees (a model's memo, a family being built,
+// the allocator's slack) besides what the explorations hold. False without a limit or a base.
+bool resident_over_limit(const Limits& limits);
 
 // The memory limit of the next run of a property: max_memory_bytes less what the property's
 // earlier runs still hold (the growth of the resident memory since it started); 0 when there

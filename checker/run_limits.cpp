@@ -8,7 +8,7 @@ std::optional<StopReason> time_or_memory_exceeded(const Limits& limits, const Pr
     return StopReason::interrupted;
   if (limits.out_of_time(progress.elapsed()))
     return StopReason::time_limit;
-  if (budget.exceeded())
+  if (budget.exceeded() || resident_over_limit(limits))
     return StopReason::memory_limit;
   return std::nullopt;
 }

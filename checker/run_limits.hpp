@@ -1,8 +1,10 @@
 #pragma once
 // The limits a run checks between the steps of the pipeline. The state limit is checked
 // at every insertion (insertion.hpp, expansion.hpp) and the memory limit at every growth
-// (memory_budget.hpp); here, time and the memory held are checked after each batch of
-// start states and after each level, and the workers' reasons to stop early are weighed.
+// (memory_budget.hpp); the workers check time every 1024 states and the property's resident
+// memory every 16384 (expansion.hpp); here, time and the memory held are checked after each
+// batch of start states and after each level, and the workers' reasons to stop early are
+// weighed.
 
 #include <atomic>
 #include <optional>
@@ -21,7 +23,8 @@ struct LevelSignals {
   std::atomic<bool> state_limit{false}; // a new state met the state limit
 };
 
-// A stop requested from outside, the time limit, then the memory held.
+// A stop requested from outside, the time limit, then the memory held (by the run, or by
+// the property as its resident memory shows).
 std::optional<StopReason> time_or_memory_exceeded(const Limits& limits, const Progress& progress,
                                                   const MemoryBudget& budget);
 

@@ -144,8 +144,8 @@ std::uint32_t StateStore::slot_of(StateId id) const {
   return static_cast<std::uint32_t>(at);
 }
 
-void StateStore::reorder(StateId first, std::span<const StateId> order,
-                         const std::uint32_t* slots) {
+void StateStore::reorder(StateId first, std::span<const StateId> order, const std::uint32_t* slots,
+                         bool in_place) {
   const std::size_t n = order.size();
   std::vector<std::uint32_t> found;
   if (!slots) {
@@ -158,8 +158,6 @@ void StateStore::reorder(StateId first, std::span<const StateId> order,
   }
   const auto id_bits = static_cast<std::uint32_t>(mask_);
   Word* level = arena_.data() + std::size_t{first} * words_;
-  const std::size_t level_words = (size() - first) * words_;
-  const std::unique_ptr<Word[]> before(new Word[level_words]); // (not zeroed: copied over)
   parallel_for(threads_, n, [&](std::uint64_t begin, std::uint64_t end) {
     for (std::uint64_t i = begin; i < end; ++i) {
       if (i + 8 < end)
@@ -168,15 +166,59 @@ void StateStore::reorder(StateId first, std::span<const StateId> order,
       slot = (slot & ~id_bits) | static_cast<std::uint32_t>(first + i + 1);
     }
   });
-  parallel_for(threads_, level_words, [&](std::uint64_t begin, std::uint64_t end) {
-    std::copy(level + begin, level + end, before.get() + begin);
-  });
+  const std::size_t count = size() - first; // holes included
+  if (in_place)
+    permute_in_place(level, count, order, first);
+  else {
+    const std::unique_ptr<Word[]> before(new Word[count * words_]); // (not zeroed: copied over)
+    parallel_for(threads_, count * words_, [&](std::uint64_t begin, std::uint64_t end) {
+      std::copy(level + begin, level + end, before.get() + begin);
+    });
+    parallel_for(threads_, n, [&](std::uint64_t begin, std::uint64_t end) {
+      for (std::uint64_t i = begin; i < end; ++i)
+        std::copy_n(before.get() + std::size_t{order[i] - first} * words_, words_,
+                    level + i * words_);
+    });
+  }
   count_ = first + n;
-  parallel_for(threads_, n, [&](std::uint64_t begin, std::uint64_t end) {
-    for (std::uint64_t i = begin; i < end; ++i)
-      std::copy_n(before.get() + std::size_t{order[i] - first} * words_, words_,
-                  level + i * words_);
-  });
+}
+
+void StateStore::permute_in_place(Word* level, std::size_t count, std::span<const StateId> order,
+                                  StateId first) {
+  // The position i < n takes the state at order[i] - first; the positions of the holes
+  // take the places from n on, in increasing order, so that the whole is a permutation of
+  // [0, count) whose cycles can be followed with one state held aside.
+  const std::size_t n = order.size();
+  std::vector<bool> is_state(count, false);
+  for (std::size_t i = 0; i < n; ++i)
+    is_state[order[i] - first] = true;
+  std::vector<std::size_t> hole_source; // of the positions n, n + 1, ...
+  hole_source.reserve(count - n);
+  for (std::size_t p = 0; p < count; ++p)
+    if (!is_state[p])
+      hole_source.push_back(p);
+  auto from = [&](std::size_t i) {
+    return i < n ? std::size_t{order[i] - first} : hole_source[i - n];
+  };
+  std::vector<bool>& placed = is_state; // (reused: every entry is set again below)
+  placed.assign(count, false);
+  std::vector<Word> held(words_);
+  for (std::size_t start = 0; start < count; ++start) {
+    if (placed[start])
+      continue;
+    std::copy_n(level + start * words_, words_, held.begin());
+    std::size_t i = start;
+    for (;;) {
+      placed[i] = true;
+      const std::size_t src = from(i);
+      if (src == start) {
+        std::copy_n(held.begin(), words_, level + i * words_);
+        break;
+      }
+      std::copy_n(level + src * words_, words_, level + i * words_);
+      i = src;
+    }
+  }
 }
 
 } // namespace checker

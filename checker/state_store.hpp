@@ -146,8 +146,16 @@ public:
   // Renumbers the states from `first` on: the state `order[i]` gets the id first + i
   // (`order` holds every id from first on that is not a hole, in any order; the holes
   // go). `slots[t]` is where the table holds the state first + t (nullptr: found here). While no
-  // thread uses the store.
-  void reorder(StateId first, std::span<const StateId> order, const std::uint32_t* slots);
+  // thread uses the store. `in_place`: the states move along the permutation's cycles,
+  // one at a time, instead of through a copy of the level (reorder_copy_bytes()): slower,
+  // for when that copy does not fit in the memory limit.
+  void reorder(StateId first, std::span<const StateId> order, const std::uint32_t* slots,
+               bool in_place = false);
+  // What reorder() allocates for the copy of the level's states from `first` on (in place:
+  // a bit per state and a word per hole, which are few).
+  std::size_t reorder_copy_bytes(StateId first) const {
+    return (size() - first) * words_ * sizeof(Word);
+  }
   // Where the table holds the state `id` (stored); while nobody inserts.
   std::uint32_t slot_of(StateId id) const;
 
@@ -162,6 +170,9 @@ public:
   static constexpr std::uint64_t max_states = 0xc0000000u;
 
 private:
+  // reorder() in place: position i takes the state at order[i] - first (holes after).
+  void permute_in_place(Word* level, std::size_t count, std::span<const StateId> order,
+                        StateId first);
   bool same(const Word* a, const Word* b) const {
     for (std::uint32_t i = 0; i < words_; ++i)
       if (a[i] != b[i])

@@ -1,8 +1,9 @@
 #pragma once
 // When a check over a family of instances, or a random search, stops before its end: the
-// property's limits (checker/options.hpp: its deadline and --max-seconds, and its states
-// budget, each instance counting as one state) and a stop requested from outside (SIGINT,
-// SIGTERM). Shared by the threads of one check; each asks next() before an instance.
+// property's limits (checker/options.hpp: its deadline and --max-seconds, its states
+// budget, each instance counting as one state, and its memory as the growth of the resident
+// memory) and a stop requested from outside (SIGINT, SIGTERM). Shared by the threads of one check;
+// each asks next() before an instance.
 //
 // A check that stops keeps what it found: a violation is still a violation (its
 // counterexample is real); a check that found none is incomplete, "holds on the N instances
@@ -13,6 +14,7 @@
 #include <string>
 
 #include "checker/interrupt.hpp"
+#include "checker/memory_budget.hpp"
 #include "checker/options.hpp"
 #include "checker/result.hpp"
 
@@ -38,6 +40,8 @@ public:
           (limits_->max_states > 0 &&
            instances_.load(std::memory_order_relaxed) >= limits_->max_states))
         return stop(checker::StopReason::state_limit);
+      if (checker::resident_over_limit(*limits_))
+        return stop(checker::StopReason::memory_limit);
       limits_->spend_states(1);
     }
     instances_.fetch_add(1, std::memory_order_relaxed);

@@ -241,6 +241,41 @@ TEST_CASE("find_or_insert hands out ids a block at a time; reorder renumbers and
   CHECK(insert(store, {102}) == std::make_pair(StateId{12}, true));
 }
 
+TEST_CASE("reorder in place moves the states as the copy does, holes included",
+          "[checker][state_store]") {
+  // Two inserters take blocks of 8 ids in turn, so the level has holes at the end of
+  // blocks; the order is a shuffle of its states.
+  for (const bool in_place : {false, true}) {
+    CAPTURE(in_place);
+    StateStore store(3);
+    for (Word w = 0; w < 20; ++w)
+      insert(store, {w, w, w});
+    store.set_inserters(2, 8);
+    store.make_room(400);
+    std::vector<StateStore::IdBlock> blocks(2, StateStore::IdBlock{0, 0, 8});
+    std::map<StateId, Words> level; // id -> state, as inserted
+    for (Word w = 1000; w < 1300; ++w) {
+      const Words s{w, w * 3, w ^ 0x55};
+      store.find_or_insert(s.data(), hash_state(s.data(), 3), blocks[(w / 7) % 2],
+                           [&](StateId id, std::uint32_t) { level[id] = s; });
+    }
+    REQUIRE(store.size() > 20 + level.size()); // there are holes
+    std::vector<StateId> order;
+    for (const auto& entry : level)
+      order.push_back(entry.first);
+    std::shuffle(order.begin(), order.end(), std::mt19937(7));
+    store.reorder(20, order, nullptr, in_place);
+    REQUIRE(store.size() == 20 + order.size());
+    for (StateId w = 0; w < 20; ++w)
+      CHECK(stored(store, w) == Words{w, w, w});
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const Words& s = level.at(order[i]);
+      CHECK(stored(store, static_cast<StateId>(20 + i)) == s);
+      CHECK(find(store, s) == StateId(20 + i));
+    }
+  }
+}
+
 TEST_CASE("truncate forgets the states after the first n", "[checker][state_store]") {
   StateStore store(1);
   for (Word w = 0; w < 3000; ++w)
