@@ -30,4 +30,24 @@ std::vector<StateId> Discovery::order(std::uint64_t count, StateId parents_begin
   return order;
 }
 
+std::vector<StateId> Discovery::dense_order(std::uint64_t count) const {
+  std::uint64_t states = 0;
+  for (std::uint64_t t = 0; t < count; ++t)
+    states += keys_[t] != hole;
+  // The holes below `states` are as many as the states from `states` on.
+  std::vector<StateId> order(states);
+  std::uint64_t back = count;
+  for (std::uint64_t t = 0; t < states; ++t) {
+    if (keys_[t] != hole) {
+      order[t] = static_cast<StateId>(first_ + t);
+      continue;
+    }
+    do
+      --back;
+    while (keys_[back] == hole);
+    order[t] = static_cast<StateId>(first_ + back);
+  }
+  return order;
+}
+
 } // namespace checker

@@ -78,6 +78,9 @@ public:
   // that their parents are in [parents_begin, parents_end). A counting sort by parent,
   // then by step.
   std::vector<StateId> order(std::uint64_t count, StateId parents_begin, StateId parents_end) const;
+  // The states among ids first.. first + count - 1 with the holes filled by the last
+  // states, the others where they are: an order that moves few states, in no key order.
+  std::vector<StateId> dense_order(std::uint64_t count) const;
   // What order() allocates.
   static std::size_t order_bytes(std::uint64_t count, std::uint64_t parents) {
     return (count + parents + 1) * sizeof(StateId);

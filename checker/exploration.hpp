@@ -53,7 +53,8 @@ struct Exploration {
   // The edges, when record_edges, in one compact form: the steps of the expanded state v
   // are edge_targets[edge_offsets[v] .. edge_offsets[v + 1]) (edge_to(): the target and
   // a timed bit), in the order the search took them. States not expanded (past
-  // edge_offsets.size() - 1) have none.
+  // edge_offsets.size() - 1) have none, nor have the states of a level that a time or
+  // memory limit or a stop from outside cut short (level_end.hpp).
   std::vector<std::uint64_t> edge_offsets{0};
   std::vector<std::uint32_t> edge_targets;
   double seconds = 0;

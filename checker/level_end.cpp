@@ -25,6 +25,17 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
   // Breadth-first ids: the new id of the state that had id first + t (empty: the same).
   std::vector<StateId> renumbered;
   std::vector<StateId> order;
+  bool target = false;
+  for (const Worker& w : workers)
+    target = target || !w.targets.empty();
+  // A level that a limit cut short (none of its states is a target) is not put in key
+  // order: which of its states got in depends on the race between the workers anyway,
+  // and the renumbering of millions of states would take seconds past the limit. Its
+  // holes are filled with its last states instead, which moves few. Its edges are not
+  // gathered either: a run that stops so is incomplete, and no check reads the graph of
+  // an incomplete run (gathering a hundred million edges takes seconds too).
+  const bool cut_short = !target && (level.signals.out_of_time || level.signals.out_of_memory ||
+                                     level.gate.stopped() || interrupted());
   if (level.concurrent()) { // (one worker inserted in key order and wrote the parents)
     // The level's holes must go whatever the memory limit says; past it, the run stops.
     // The states move through a copy of the level when it fits, else one at a time.
@@ -35,14 +46,18 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
       budget.note(budget.held() + bytes);
       stop = StopReason::memory_limit;
     }
-    order = discovery.order(count, level.begin, level.end);
+    order =
+        cut_short ? discovery.dense_order(count) : discovery.order(count, level.begin, level.end);
     renumbered.resize(count);
     for (std::size_t i = 0; i < order.size(); ++i)
       renumbered[order[i] - first] = static_cast<StateId>(first + i);
     if (level.states)
       level.states->reorder(order, count);
     count = order.size();
-    ex.store.reorder(first, order, discovery.slots(), in_place);
+    if (cut_short)
+      ex.store.fill_holes(first, order, discovery.slots());
+    else
+      ex.store.reorder(first, order, discovery.slots(), in_place);
     if (!budget.grow_within(ex.parent, count))
       return StopReason::memory_limit;
     for (std::size_t i = 0; i < count; ++i)
@@ -69,7 +84,7 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
     const Word* state = level.states->frontier(ex.stuck.front());
     ex.first_stuck_state.assign(state, state + ex.state_words);
   }
-  if (record_edges) {
+  if (record_edges && !cut_short) {
     // Each frontier state's steps: to states stored before the level first, then to new
     // ones, as a sequential search records them; one worker has each state's.
     if (!budget.grow_within(ex.edge_targets, known + fresh) ||

@@ -12,7 +12,10 @@
 // - the run stops at the target with the smallest id; the states after it are forgotten,
 //   as a sequential search would not have inserted them.
 // The counts go in whole, whatever stops the level: they are then the same for every
-// thread count.
+// thread count. A level that a limit (time, memory, a stop from outside) cut short, with
+// no target in it, keeps its states in the order the workers inserted them, with its
+// holes filled, and gathers no edges: it stops within the limit, and which states got
+// in was a race anyway.
 
 #include <optional>
 #include <span>

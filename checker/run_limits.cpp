@@ -13,6 +13,16 @@ std::optional<StopReason> time_or_memory_exceeded(const Limits& limits, const Pr
   return std::nullopt;
 }
 
+std::optional<StopReason> property_limit_reached(const Limits& limits) {
+  if (interrupted())
+    return StopReason::interrupted;
+  if (limits.deadline && std::chrono::steady_clock::now() > *limits.deadline)
+    return StopReason::time_limit;
+  if (resident_over_limit(limits))
+    return StopReason::memory_limit;
+  return std::nullopt;
+}
+
 std::optional<StopReason> stop_after_level(std::optional<StopReason> ended,
                                            const LevelSignals& signals, const Limits& limits,
                                            const Progress& progress, const MemoryBudget& budget) {

@@ -28,6 +28,12 @@ struct LevelSignals {
 std::optional<StopReason> time_or_memory_exceeded(const Limits& limits, const Progress& progress,
                                                   const MemoryBudget& budget);
 
+// Whether a property must stop now, between its explorations: a stop requested from
+// outside, its deadline passed (Limits::deadline; max_seconds alone bounds each exploration),
+// or its resident memory over the limit. For the loops a check runs over the states an
+// exploration found or over a family it builds, which no exploration bounds.
+std::optional<StopReason> property_limit_reached(const Limits& limits);
+
 // Why the run stops after a level whose end (level_end.hpp) gave `ended` (none: the level
 // went in whole); none when it goes on. A limit the workers met wins over the level end's
 // reason; time and memory are checked only when nothing stopped.

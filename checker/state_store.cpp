@@ -183,6 +183,20 @@ void StateStore::reorder(StateId first, std::span<const StateId> order, const st
   count_ = first + n;
 }
 
+void StateStore::fill_holes(StateId first, std::span<const StateId> order,
+                            const std::uint32_t* slots) {
+  const auto id_bits = static_cast<std::uint32_t>(mask_);
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const StateId from = order[i], to = static_cast<StateId>(first + i);
+    if (from == to)
+      continue;
+    std::uint32_t& slot = table_[slots ? slots[from - first] : slot_of(from)];
+    slot = (slot & ~id_bits) | (to + 1);
+    std::copy_n(state(from), words_, arena_.data() + std::size_t{to} * words_);
+  }
+  count_ = first + order.size();
+}
+
 void StateStore::permute_in_place(Word* level, std::size_t count, std::span<const StateId> order,
                                   StateId first) {
   // The position i < n takes the state at order[i] - first; the positions of the holes

@@ -151,6 +151,9 @@ public:
   // for when that copy does not fit in the memory limit.
   void reorder(StateId first, std::span<const StateId> order, const std::uint32_t* slots,
                bool in_place = false);
+  // reorder() for an order that moves few states (Discovery::dense_order): only the states
+  // that move are touched.
+  void fill_holes(StateId first, std::span<const StateId> order, const std::uint32_t* slots);
   // What reorder() allocates for the copy of the level's states from `first` on (in place:
   // a bit per state and a word per hole, which are few).
   std::size_t reorder_copy_bytes(StateId first) const {

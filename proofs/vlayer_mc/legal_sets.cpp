@@ -1,6 +1,7 @@
 #include "proofs/vlayer_mc/legal_sets.hpp"
 
 #include "checker/explorer.hpp"
+#include "checker/run_limits.hpp"
 #include "checker/trace.hpp"
 #include "models/vlayer_mc/lmc.hpp"
 #include "models/vlayer_mc/reset_mc.hpp"
@@ -147,7 +148,15 @@ PropertyResult check_reset_in_l1mc(const VlConfig& c, const tioa::Automaton& sys
   PropertyResult r = checker::result_of("invariant", ex, generator);
   std::uint64_t reached_reset = 0, reached_outside = 0;
   std::optional<checker::StateId> first_outside;
-  for (checker::StateId id = 0; id < ex.store.size(); ++id)
+  // The counts below read every state again, and the family is built whole: the property's
+  // limits bound them too (a run stopped here is incomplete, whatever it counted).
+  std::optional<checker::StopReason> stopped;
+  const auto limit_reached = [&](std::uint64_t done) {
+    if ((done & 4095) == 0 && !stopped)
+      stopped = checker::property_limit_reached(options.limits);
+    return stopped.has_value();
+  };
+  for (checker::StateId id = 0; id < ex.store.size() && !limit_reached(id); ++id)
     switch (classify(ex.store.state(id))) {
     case Kind::reset:
       ++reached_reset;
@@ -165,22 +174,30 @@ PropertyResult check_reset_in_l1mc(const VlConfig& c, const tioa::Automaton& sys
   std::uint64_t family_reset = 0, family_other = 0, family_outside = 0;
   std::optional<std::vector<Word>> family_bad;
   std::vector<Word> buffer(system.words() + 1, 0);
-  family.enumerate(buffer.data(), 0, [&] {
-    switch (classify(buffer.data())) {
-    case Kind::reset:
-      ++family_reset;
-      break;
-    case Kind::other:
-      ++family_other;
-      break;
-    case Kind::outside:
-      ++family_outside;
-      break;
-    case Kind::inconsistent:
-      if (!family_bad)
-        family_bad.emplace(buffer.begin(), buffer.end() - 1);
-    }
-  });
+  struct Stop {}; // leaves the enumeration when a limit is met
+  std::uint64_t built = 0;
+  try {
+    if (!stopped)
+      family.enumerate(buffer.data(), 0, [&] {
+        if (limit_reached(++built))
+          throw Stop{};
+        switch (classify(buffer.data())) {
+        case Kind::reset:
+          ++family_reset;
+          break;
+        case Kind::other:
+          ++family_other;
+          break;
+        case Kind::outside:
+          ++family_outside;
+          break;
+        case Kind::inconsistent:
+          if (!family_bad)
+            family_bad.emplace(buffer.begin(), buffer.end() - 1);
+        }
+      });
+  } catch (const Stop&) {
+  }
 
   r.coverage = {checker::Starts::sampled, reached_reset + family_reset, std::nullopt,
                 "ResetMC (Def 7.2)",
@@ -204,6 +221,10 @@ PropertyResult check_reset_in_l1mc(const VlConfig& c, const tioa::Automaton& sys
     r.message = "the ResetMC predicate accepts a state that the L1MC predicate rejects";
   } else if (!ex.complete()) {
     mark_incomplete(r, ex, "every ResetMC state covered is in L1MC");
+  } else if (stopped) {
+    r.verdict = Verdict::incomplete;
+    r.message = std::string(checker::describe(*stopped)) +
+                " while the states were classified: every ResetMC state covered is in L1MC";
   } else {
     r.verdict = Verdict::holds;
     r.message = "every ResetMC state covered is in L1MC: " + std::to_string(reached_reset) +

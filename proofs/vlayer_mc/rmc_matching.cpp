@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "checker/run_limits.hpp"
 #include "models/vlayer_mc/lmc.hpp"
 #include "models/vlayer_mc/reset_mc.hpp"
 #include "models/vlayer_mc/slots.hpp"
@@ -86,12 +87,29 @@ Matching match_family(const VlConfig& c, const tioa::Automaton& layer, const tio
   for (const RmcReading r : readings)
     each.emplace_back(c, full, r);
   // The index: every reachable state by the key all readings require equal.
+  // The matching runs after Reach, outside any exploration: the property's limits bound it
+  // too. One that stops leaves Reach marked as stopped by that limit, so that the lemmas
+  // report it incomplete as they do a Reach cut short.
+  const auto limit_reached = [&](std::uint64_t done) {
+    if ((done & 4095) != 0)
+      return false;
+    if (const auto stop = checker::property_limit_reached(options.limits)) {
+      m.reach.stop = *stop;
+      return true;
+    }
+    return false;
+  };
   std::vector<std::pair<std::uint64_t, StateId>> index;
   index.reserve(m.reach.store.size());
-  for (StateId id = 0; id < m.reach.store.size(); ++id)
+  for (StateId id = 0; id < m.reach.store.size(); ++id) {
+    if (limit_reached(id))
+      return m;
     index.emplace_back(relation.key(m.reach.store.state(id)), id);
+  }
   std::sort(index.begin(), index.end());
   for (std::size_t i = 0; i < m.family.size(); ++i) {
+    if (limit_reached(i))
+      return m;
     const Word* x = m.family[i].data();
     const auto key = relation.key(x);
     auto at = std::lower_bound(index.begin(), index.end(), std::make_pair(key, StateId{0}));

@@ -1,6 +1,7 @@
 #include "proofs/vlayer_mc/stabilisation_common.hpp"
 
 #include "checker/explorer.hpp"
+#include "checker/run_limits.hpp"
 #include "tioa/successors.hpp"
 
 namespace vlayer_mc {
@@ -19,7 +20,12 @@ StateList reached_where(const tioa::Automaton& system, const tioa::StatePredicat
   const checker::Exploration ex = checker::explore(generator, system.start(), options);
   complete = complete && ex.complete();
   StateList out{system.words(), {}};
+  // The list is built outside the exploration: the property's limits bound it too.
   for (checker::StateId id = 0; id < ex.store.size(); ++id) {
+    if ((id & 4095) == 0 && checker::property_limit_reached(options.limits)) {
+      complete = false;
+      break;
+    }
     const Word* w = ex.store.state(id);
     if (keep(tioa::State(w, 0)))
       out.data.insert(out.data.end(), w, w + system.words());

@@ -35,7 +35,8 @@
 namespace vlayer_mc {
 
 // The states of `system`'s exploration that satisfy `keep`, as a list; `complete` becomes
-// false when the exploration hit a limit (it is never set true).
+// false when the exploration hit a limit, or the property's limits cut the list short (it is
+// never set true).
 StateList reached_where(const tioa::Automaton& system, const tioa::StatePredicate& keep,
                         const checker::ExploreOptions& options, bool& complete);
 
