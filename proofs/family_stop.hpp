@@ -11,6 +11,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <string>
 
 #include "checker/interrupt.hpp"
@@ -25,26 +26,27 @@ public:
   explicit FamilyStop(const checker::Limits* limits = nullptr)
       : limits_(limits), started_(std::chrono::steady_clock::now()) {}
 
-  // False when the check must stop (and from then on); true counts one more instance.
+  // False when the check must stop (and from then on); true counts one more instance. The
+  // instance is claimed atomically from --max-states and the property's budget, so the
+  // threads together never check more instances than the limit.
   bool next() {
-    if (stopped_.load(std::memory_order_relaxed))
-      return false;
-    if (checker::interrupted())
-      return stop(checker::StopReason::interrupted);
-    if (limits_) {
-      const double elapsed =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-      if (limits_->out_of_time(elapsed))
-        return stop(checker::StopReason::time_limit);
-      if (limits_->states_exhausted() ||
-          (limits_->max_states > 0 &&
-           instances_.load(std::memory_order_relaxed) >= limits_->max_states))
-        return stop(checker::StopReason::state_limit);
-      if (checker::resident_over_limit(*limits_))
-        return stop(checker::StopReason::memory_limit);
-      limits_->spend_states(1);
+    if (const std::optional<checker::StopReason> reason = limit_reached())
+      return stop(*reason);
+    if (!claim(instances_, limits_ ? limits_->max_states : 0))
+      return stop(checker::StopReason::state_limit);
+    if (limits_ && limits_->states_budget &&
+        !claim(limits_->states_budget->spent, limits_->states_budget->max)) {
+      instances_.fetch_sub(1, std::memory_order_relaxed); // (not checked after all)
+      return stop(checker::StopReason::state_limit);
     }
-    instances_.fetch_add(1, std::memory_order_relaxed);
+    return true;
+  }
+
+  // False when the check must stop (and from then on), counting nothing: for a check whose
+  // units of work hold several instances, asked before each unit.
+  bool go_on() {
+    if (const std::optional<checker::StopReason> reason = limit_reached())
+      return stop(*reason);
     return true;
   }
 
@@ -73,6 +75,33 @@ public:
   }
 
 private:
+  // A stop already decided, a stop requested from outside, time up or memory over.
+  std::optional<checker::StopReason> limit_reached() const {
+    if (stopped_.load(std::memory_order_relaxed))
+      return reason_.load(std::memory_order_relaxed);
+    if (checker::interrupted())
+      return checker::StopReason::interrupted;
+    if (!limits_)
+      return std::nullopt;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    if (limits_->out_of_time(elapsed))
+      return checker::StopReason::time_limit;
+    if (checker::resident_over_limit(*limits_))
+      return checker::StopReason::memory_limit;
+    return std::nullopt;
+  }
+
+  // Adds one to `count` unless it has reached `max` (0: no limit).
+  static bool claim(std::atomic<std::uint64_t>& count, std::uint64_t max) {
+    std::uint64_t n = count.load(std::memory_order_relaxed);
+    do
+      if (max > 0 && n >= max)
+        return false;
+    while (!count.compare_exchange_weak(n, n + 1, std::memory_order_relaxed));
+    return true;
+  }
+
   bool stop(checker::StopReason reason) {
     bool expected = false;
     if (stopped_.compare_exchange_strong(expected, true))

@@ -395,8 +395,9 @@ bool less(const Rational& a, const Rational& b) {
   return numerator(a) * denominator(b) < numerator(b) * denominator(a);
 }
 
+// Each start is one instance of the family's limits (`stop`); none is checked after it says no.
 void check_dynamics(const Lemma68Family& family, const DynamicsItem& item, std::size_t item_index,
-                    Partial& out) {
+                    FamilyStop& stop, Partial& out) {
   const Rational& length = family.lengths[item.length];
   const Rational& rho1 = family.rho1s[item.rho1];
   // ρ1 = a/b: T e = (2(b − a)e_i + a(e_{i−1} + e_{i+1}))/(2b).
@@ -427,6 +428,8 @@ void check_dynamics(const Lemma68Family& family, const DynamicsItem& item, std::
   }
 
   for (const Vector& start : starts) {
+    if (!stop.next())
+      return;
     ++out.starts;
     Vector p = start;
     ScaledError e, e_next;
@@ -706,13 +709,12 @@ Lemma68Check check_lemma_6_8(const Lemma68Family& family, const CheckOptions& op
   std::vector<Partial> parts(items);
   std::atomic<std::size_t> next{0};
   FamilyStop stop(options.limits);
-  std::atomic<std::uint64_t> done{0};
   auto work = [&] {
-    for (std::size_t i = next++; i < items && stop.next(); i = next++, ++done) {
+    for (std::size_t i = next++; i < items && stop.go_on(); i = next++) {
       if (i < family.rho1s.size())
         check_matrices(family, family.rho1s[i], parts[i]);
       else
-        check_dynamics(family, dynamics[i - family.rho1s.size()], i, parts[i]);
+        check_dynamics(family, dynamics[i - family.rho1s.size()], i, stop, parts[i]);
     }
   };
   run_on_threads(options.threads, work);
@@ -860,7 +862,7 @@ Lemma68Check check_lemma_6_8(const Lemma68Family& family, const CheckOptions& op
   check.note_statements("reported ");
   check.note_witnesses();
   r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  stop.mark(check.result, done);
+  stop.mark(check.result, check.starts); // (the starts are its instances)
   return check;
 }
 
