@@ -14,23 +14,22 @@
 
 #include <nlohmann/json.hpp>
 
+#include "catalogue/picture_state.hpp"
 #include "models/path_reservation/path_geometry.hpp"
 #include "models/path_reservation/scenario_file.hpp"
-#include "support/xml_escape.hpp"
 
 namespace catalogue {
 
 namespace {
 
-// Text for the page, which is also well-formed XML (as cli/html_text.hpp).
-std::string html_text(std::string_view text) {
-  return support::xml_escape(text);
-}
-
 using path_reservation::Cell;
 using path_reservation::CellSet;
 using path_reservation::PathGeometry;
 using path_reservation::Zone;
+using picture::flag;
+using picture::html_text;
+using picture::indexed;
+using picture::number;
 
 // One colour per robot (the scenarios have at most path_reservation::max_robots = 4).
 constexpr std::array<const char*, 6> robot_colours{"#1e88e5", "#fb8c00", "#00897b",
@@ -58,32 +57,11 @@ std::string robot_name(int robot) {
   return "R" + std::to_string(robot);
 }
 
-std::string indexed(const std::string& base, int i) {
-  return base + "[" + std::to_string(i) + "]";
-}
-
-std::string indexed(const std::string& base, int i, int j) {
-  return indexed(indexed(base, i), j);
-}
-
-// A variable of the state by name: its number, or nothing when it is absent or ⊥.
-std::optional<long> number(const Json& state, const std::string& name) {
-  const auto it = state.find(name);
-  if (it == state.end() || !it->is_number_integer())
-    return std::nullopt;
-  return it->get<long>();
-}
-
 std::optional<std::string> word(const Json& state, const std::string& name) {
   const auto it = state.find(name);
   if (it == state.end() || !it->is_string())
     return std::nullopt;
   return it->get<std::string>();
-}
-
-bool flag(const Json& state, const std::string& name) {
-  const auto it = state.find(name);
-  return it != state.end() && it->is_boolean() && it->get<bool>();
 }
 
 // A set-valued variable ("G[1]": ["R2", "R3"]) as "{R2, R3}"; nothing when absent.
@@ -154,7 +132,7 @@ RobotView view_of(const PathGeometry& geometry, const Json& state, int robot) {
   return view;
 }
 
-struct Canvas {
+struct CellCanvas {
   int cell;
   int margin = 30;
   double left(int x) const { return margin + x * cell; }
@@ -172,7 +150,7 @@ struct Disc {
   double radius = 0;
 };
 
-void cell_rect(std::ostream& out, const Canvas& canvas, Cell c, double inset,
+void cell_rect(std::ostream& out, const CellCanvas& canvas, Cell c, double inset,
                const std::string& attributes) {
   out << "<rect " << attributes << " x=\"" << canvas.left(c.x) + inset << "\" y=\""
       << canvas.top(c.y) + inset << "\" width=\"" << canvas.cell - 2 * inset << "\" height=\""
@@ -210,8 +188,8 @@ bool in_flight(const Json& state, const MessageKind& kind, int i, int j) {
 
 // An arrow from one robot to another, to the right of its direction so that the two
 // directions and several messages between one pair stay apart.
-void arrow(std::ostream& out, const Disc& from, const Disc& to, int slot, const MessageKind& kind,
-           const std::string& id) {
+void arrow_between_robots(std::ostream& out, const Disc& from, const Disc& to, int slot,
+                          const MessageKind& kind, const std::string& id) {
   const double dx = to.centre.x - from.centre.x, dy = to.centre.y - from.centre.y;
   const double length = std::hypot(dx, dy);
   if (length < from.radius + to.radius + 8)
@@ -255,7 +233,7 @@ void write_path_reservation_picture(std::ostream& out, const Json& params, const
   const PathGeometry& geometry = *built;
   const auto& plane = geometry.plane;
   const int robots = geometry.scenario.robots();
-  const Canvas canvas{std::clamp(400 / std::max(plane.width(), plane.height()), 40, 110)};
+  const CellCanvas canvas{std::clamp(400 / std::max(plane.width(), plane.height()), 40, 110)};
   const double radius = std::min(canvas.cell * 0.26, 18.0);
   const int width = 2 * canvas.margin + plane.width() * canvas.cell;
   const int height = 2 * canvas.margin + plane.height() * canvas.cell;
@@ -343,7 +321,7 @@ void write_path_reservation_picture(std::ostream& out, const Json& params, const
           continue;
         messages.push_back(message_text(state, kind, i, j));
         if (drawn[i] && drawn[j])
-          arrow(out, *drawn[i], *drawn[j], slot++, kind, id);
+          arrow_between_robots(out, *drawn[i], *drawn[j], slot++, kind, id);
       }
     }
   // Robots, and a red frame around a cell that holds more than one.

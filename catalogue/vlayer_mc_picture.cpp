@@ -3,35 +3,21 @@
 #include <algorithm>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "catalogue/picture_state.hpp"
 #include "models/vlayer_mc/lattice.hpp"
-#include "support/xml_escape.hpp"
 
 namespace catalogue {
 
 namespace {
 
-// Text for the page, which is also well-formed XML (as cli/html_text.hpp).
-std::string html_text(std::string_view text) {
-  return support::xml_escape(text);
-}
-
-// A variable of the state by name: its number, or nothing when it is absent or ⊥.
-std::optional<long> number(const Json& state, const std::string& name) {
-  const auto it = state.find(name);
-  if (it == state.end() || !it->is_number_integer())
-    return std::nullopt;
-  return it->get<long>();
-}
-
-bool flag(const Json& state, const std::string& name) {
-  const auto it = state.find(name);
-  return it != state.end() && it->is_boolean() && it->get<bool>();
-}
+using picture::flag;
+using picture::html_text;
+using picture::indexed;
+using picture::number;
 
 std::string text(const Json& state, const std::string& name) {
   const auto it = state.find(name);
@@ -40,16 +26,12 @@ std::string text(const Json& state, const std::string& name) {
   return it->is_string() ? it->get<std::string>() : it->dump();
 }
 
-std::string indexed(const std::string& base, int i) {
-  return base + "[" + std::to_string(i) + "]";
-}
-
 int param(const Json& params, const char* name, int fallback) {
   const auto it = params.find(name);
   return it != params.end() && it->is_number_integer() ? it->get<int>() : fallback;
 }
 
-struct Canvas {
+struct LatticeCanvas {
   const vlayer_mc::Lattice& lattice;
   int scale;
   int margin = 24;
@@ -66,8 +48,8 @@ std::string point_text(const vlayer_mc::Lattice& lattice, long p) {
          ")";
 }
 
-void arrow(std::ostream& out, double x1, double y1, double x2, double y2, const char* kind,
-           const std::string& head) {
+void arrow_between_points(std::ostream& out, double x1, double y1, double x2, double y2,
+                          const char* kind, const std::string& head) {
   out << "<line class=\"msg " << kind << "\" x1=\"" << x1 << "\" y1=\"" << y1 << "\" x2=\"" << x2
       << "\" y2=\"" << y2 << "\" marker-end=\"url(#" << head << ")\"/>\n";
 }
@@ -82,7 +64,7 @@ void write_vlayer_mc_picture(std::ostream& out, const Json& params, const Json& 
   const auto nbh =
       param(params, "nbh", 4) == 8 ? mc::Neighbourhood::eight : mc::Neighbourhood::four;
   const vlayer_mc::Lattice lattice(rows, cols, b, nbh);
-  const Canvas canvas{lattice, std::max(16, 320 / std::max(cols * b, rows * b))};
+  const LatticeCanvas canvas{lattice, std::max(16, 320 / std::max(cols * b, rows * b))};
   const int width = 2 * canvas.margin + cols * b * canvas.scale;
   const int height = 2 * canvas.margin + rows * b * canvas.scale;
   std::vector<std::string> messages;
@@ -129,8 +111,9 @@ void write_vlayer_mc_picture(std::ostream& out, const Json& params, const Json& 
       const auto at = number(state, indexed("VBcast.cn_loc", p));
       if (at && loc && *at >= 0 && *at < lattice.points()) {
         const vlayer_mc::Point to = lattice.centre(lattice.region_of(static_cast<int>(*at)));
-        arrow(out, canvas.x(static_cast<int>(*loc)), canvas.y(static_cast<int>(*loc)), canvas.x(to),
-              canvas.y(to), "cn-update", head);
+        arrow_between_points(out, canvas.x(static_cast<int>(*loc)),
+                             canvas.y(static_cast<int>(*loc)), canvas.x(to), canvas.y(to),
+                             "cn-update", head);
       }
       messages.push_back("cn-update ⟨" + std::to_string(p) + ", " +
                          point_text(lattice, at.value_or(-1)) + "⟩ in VBcast, age " +
@@ -145,8 +128,8 @@ void write_vlayer_mc_picture(std::ostream& out, const Json& params, const Json& 
       for (std::size_t i = 0; i < nbrs.size(); ++i)
         if ((*mask >> i) & 1) {
           const vlayer_mc::Point from = lattice.centre(u), target = lattice.centre(nbrs[i]);
-          arrow(out, canvas.x(from), canvas.y(from) + 6, canvas.x(target), canvas.y(target) + 6,
-                "vn-update", head);
+          arrow_between_points(out, canvas.x(from), canvas.y(from) + 6, canvas.x(target),
+                               canvas.y(target) + 6, "vn-update", head);
           to += (to.empty() ? "" : ", ") + std::to_string(nbrs[i]);
         }
       messages.push_back("vn-update ⟨" + std::to_string(u) + ", " +
@@ -160,8 +143,9 @@ void write_vlayer_mc_picture(std::ostream& out, const Json& params, const Json& 
       const auto loc = number(state, indexed("RW.loc", p));
       const vlayer_mc::Point from = lattice.centre(u);
       if (loc && *loc >= 0 && *loc < lattice.points())
-        arrow(out, canvas.x(from), canvas.y(from) - 6, canvas.x(static_cast<int>(*loc)),
-              canvas.y(static_cast<int>(*loc)) - 6, "target-update", head);
+        arrow_between_points(out, canvas.x(from), canvas.y(from) - 6,
+                             canvas.x(static_cast<int>(*loc)), canvas.y(static_cast<int>(*loc)) - 6,
+                             "target-update", head);
       messages.push_back(
           "target-update ⟨" + std::to_string(p) + ", " +
           point_text(lattice, number(state, indexed("VBcast.tu_target", slot)).value_or(-1)) +

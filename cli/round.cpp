@@ -25,8 +25,6 @@ namespace {
 using catalogue::UsageError;
 using Input = nlohmann::json;
 
-constexpr int max_side = 50; // m: the grid keeps m⁴ distances; the paper's runs use m <= 20
-
 [[noreturn]] void bad(const std::string& source, const std::string& what) {
   throw UsageError("round config '" + source + "': " + what);
 }
@@ -188,7 +186,7 @@ RoundConfig read_round_config(std::istream& in, const std::string& source) {
         std::end(known))
       bad(source, "unknown field '" + key + "' (fields: m, nbh, k, rho1, rho2, q, robots)");
 
-  const int m = static_cast<int>(whole(field(root, source, "m"), 1, max_side, source, "m"));
+  const int m = static_cast<int>(whole(field(root, source, "m"), 1, max_grid_side, source, "m"));
   const Input& nbh = field(root, source, "nbh");
   if (!nbh.is_number_integer() || (nbh.get<std::int64_t>() != 4 && nbh.get<std::int64_t>() != 8))
     bad(source, "nbh must be 4 or 8, not " + nbh.dump());

@@ -12,6 +12,10 @@
 
 namespace cli {
 
+// The largest grid side m that `round` and `simulate` accept: the grid keeps m⁴ distances;
+// the paper's runs use m <= 20.
+constexpr int max_grid_side = 50;
+
 struct RoundRequest {
   std::string config; // a file, or "-" for stdin
   bool json = false;

@@ -15,6 +15,7 @@
 #include "catalogue/registry.hpp"
 #include "cli/exit_status.hpp"
 #include "cli/report_json.hpp"
+#include "cli/round.hpp"
 #include "models/mc/curve_local.hpp"
 #include "models/mc/simulation.hpp"
 
@@ -23,8 +24,6 @@ namespace cli {
 namespace {
 
 using catalogue::UsageError;
-
-constexpr int max_side = 50; // as `round`; the paper's runs use m <= 20
 
 constexpr const char* claim_text =
     "\"if the curve is located far from the initial position of the PNs, as in the case of C2, "
@@ -273,10 +272,10 @@ void add_simulate_options(CLI::App& command, SimulateRequest& request) {
           "DIR"));
   command.add_option("--m-from", request.m_from, "the smallest grid side m (default 10)")
       ->type_name("M")
-      ->check(CLI::Range(1, max_side));
+      ->check(CLI::Range(1, max_grid_side));
   command.add_option("--m-to", request.m_to, "the largest grid side m (default 20)")
       ->type_name("M")
-      ->check(CLI::Range(1, max_side));
+      ->check(CLI::Range(1, max_grid_side));
   command
       .add_option("--curves", request.curves,
                   "the curves, a comma-separated list of C1, C2, C3 (default all three)")
@@ -302,7 +301,7 @@ void add_simulate_options(CLI::App& command, SimulateRequest& request) {
       .add_option("--fig8-m", request.fig8_m,
                   "the m of the Fig. 8 pictures (default 10 if in the range, else --m-from)")
       ->type_name("M")
-      ->check(CLI::Range(1, max_side));
+      ->check(CLI::Range(1, max_grid_side));
   command
       .add_option("--dominance", request.dominance,
                   "the claim holds when T_out >= SHARE * T_stab for C2 at every m "

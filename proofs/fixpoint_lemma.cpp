@@ -18,7 +18,7 @@ using Clock = std::chrono::steady_clock;
 using support::join;
 
 // "7/2 (3.5)"; whole numbers without the decimal.
-std::string show(const mc::Rational& r) {
+std::string rational_text(const mc::Rational& r) {
   std::string out = mc::to_string(r);
   if (denominator(r) != 1) {
     char buffer[32];
@@ -32,16 +32,16 @@ std::vector<std::int64_t> as_values(const std::vector<QuantisedLength>& q) {
   return {q.begin(), q.end()};
 }
 
-struct Tallies {
+struct FixpointTallies {
   std::vector<BoundTally> claims;
   std::uint64_t instances = 0, skipped = 0, rounds = 0;
 
-  explicit Tallies(const FixpointLemma& lemma) {
+  explicit FixpointTallies(const FixpointLemma& lemma) {
     for (const BoundClaim& c : lemma.claims)
       claims.push_back({.claim = c});
   }
 
-  void add(Tallies& other) {
+  void add(FixpointTallies& other) {
     instances += other.instances;
     skipped += other.skipped;
     rounds += other.rounds;
@@ -51,7 +51,7 @@ struct Tallies {
 };
 
 // One claim measured on one run.
-void record(BoundTally& tally, const FixpointInstance& instance, Measurement&& measurement) {
+void record_claim(BoundTally& tally, const FixpointInstance& instance, Measurement&& measurement) {
   tally.record_measurement(
       measurement,
       [&] {
@@ -66,7 +66,7 @@ void record(BoundTally& tally, const FixpointInstance& instance, Measurement&& m
       closer_to_bound);
 }
 
-std::string where(const BoundWitness& w) {
+std::string describe_witness(const BoundWitness& w) {
   return describe(w.setting) + ", " + std::to_string(w.robots()) + " robots";
 }
 
@@ -95,7 +95,7 @@ std::vector<std::string> BoundWitness::lines() const {
   const int m = setting.m;
   std::vector<std::string> out;
   out.push_back("claim " + claim + (violated() ? ": counterexample" : ": worst case") + ", " +
-                where(*this));
+                describe_witness(*this));
   out.push_back("  q (units of sigma):");
   for (std::string& line : matrix_lines(m, as_values(setting.q), "    ", true))
     out.push_back(std::move(line));
@@ -112,8 +112,8 @@ std::vector<std::string> BoundWitness::lines() const {
     out.push_back("  … " + std::to_string(run.rounds.size() - shown) + " more rounds");
   out.push_back("  T_out = " + std::to_string(t_out) + ", T_stab = " + std::to_string(t_stab) +
                 ", fixed point at round " + std::to_string(fixpoint_round));
-  out.push_back("  measured " + show(measurement.value) + (violated() ? " > " : " <= ") + "bound " +
-                show(measurement.bound) + ": " + measurement.detail);
+  out.push_back("  measured " + rational_text(measurement.value) + (violated() ? " > " : " <= ") +
+                "bound " + rational_text(measurement.bound) + ": " + measurement.detail);
   return out;
 }
 
@@ -132,8 +132,8 @@ std::string BoundWitness::json() const {
   out["t_out"] = t_out;
   out["t_stab"] = t_stab;
   out["fixpoint_round"] = fixpoint_round;
-  out["measured"] = show(measurement.value);
-  out["bound"] = show(measurement.bound);
+  out["measured"] = rational_text(measurement.value);
+  out["bound"] = rational_text(measurement.bound);
   out["detail"] = measurement.detail;
   return out.dump();
 }
@@ -143,11 +143,11 @@ template <> std::string Tally<BoundWitness>::summary() const {
                                          std::to_string(premise) + " instances"
                                    : "holds on " + std::to_string(premise) + " instances";
   if (largest)
-    out += "; largest measured " + show(largest->measurement.value) + " (its bound " +
-           show(largest->measurement.bound) + ") at " + where(*largest);
+    out += "; largest measured " + rational_text(largest->measurement.value) + " (its bound " +
+           rational_text(largest->measurement.bound) + ") at " + describe_witness(*largest);
   if (tightest)
-    out += "; closest to its bound " + show(tightest->measurement.value) + " vs " +
-           show(tightest->measurement.bound) + " at " + where(*tightest);
+    out += "; closest to its bound " + rational_text(tightest->measurement.value) + " vs " +
+           rational_text(tightest->measurement.bound) + " at " + describe_witness(*tightest);
   if (smallest)
     out += "; smallest counterexample " + std::to_string(smallest->robots()) +
            " robots, m = " + std::to_string(smallest->setting.m);
@@ -173,7 +173,7 @@ FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& fa
   const auto start = Clock::now();
   const SettingList list = settings(family);
   const std::size_t n = list.settings.size();
-  std::vector<Tallies> per_setting(n, Tallies(lemma));
+  std::vector<FixpointTallies> per_setting(n, FixpointTallies(lemma));
   std::atomic<std::size_t> next{0};
   FamilyStop stop(options.limits);
   struct Stopped {};
@@ -184,7 +184,7 @@ FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& fa
       const Setting& setting = list.settings[i];
       const mc::RoundSystem system = setting.system();
       const mc::Rational r3 = rho3(system);
-      Tallies& tallies = per_setting[i];
+      FixpointTallies& tallies = per_setting[i];
       Coverage coverage;
       try {
         coverage = for_each_configuration(
@@ -199,7 +199,7 @@ FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& fa
               lemma.evaluate(instance, out);
               for (std::size_t c = 0; c < out.size(); ++c)
                 if (out[c])
-                  record(tallies.claims[c], instance, std::move(*out[c]));
+                  record_claim(tallies.claims[c], instance, std::move(*out[c]));
             });
       } catch (const Stopped&) {
         return;
@@ -209,8 +209,8 @@ FixpointCheck check_fixpoint_family(const FixpointLemma& lemma, const Family& fa
   };
   run_on_threads(options.threads, work);
 
-  Tallies all(lemma);
-  for (Tallies& t : per_setting)
+  FixpointTallies all(lemma);
+  for (FixpointTallies& t : per_setting)
     all.add(t);
 
   FixpointCheck check;

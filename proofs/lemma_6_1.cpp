@@ -9,11 +9,11 @@ namespace {
 
 enum Part { part1, part2, part3, part4, part5 };
 
-std::string where(const mc::RoundSystem& system, RegionId u) {
+std::string region_label(const mc::RoundSystem& system, RegionId u) {
   return "region " + region_name(system.grid().m(), u);
 }
 
-void evaluate(const RoundStep& step, std::vector<ClaimOutcome>& out) {
+void evaluate_6_1(const RoundStep& step, std::vector<ClaimOutcome>& out) {
   const auto& system = step.system;
   const auto& q = system.q();
   const RobotCount k = system.params().k;
@@ -34,7 +34,7 @@ void evaluate(const RoundStep& step, std::vector<ClaimOutcome>& out) {
       ++out[part1].premise;
       if (step.after[u] < k)
         fail(part1, [&] {
-          return where(system, u) + ": y(u,t) = " + std::to_string(step.before[u]) +
+          return region_label(system, u) + ": y(u,t) = " + std::to_string(step.before[u]) +
                  " >= k = " + std::to_string(k) +
                  " but y(u,t+1) = " + std::to_string(step.after[u]);
         });
@@ -44,7 +44,7 @@ void evaluate(const RoundStep& step, std::vector<ClaimOutcome>& out) {
       ++out[part2].premise;
       if (!in_after(u))
         fail(part2, [&] {
-          return where(system, u) + " is in In(t) (" + std::to_string(step.before[u]) +
+          return region_label(system, u) + " is in In(t) (" + std::to_string(step.before[u]) +
                  " robots) but not in In(t+1) (" + std::to_string(step.after[u]) + ")";
         });
     }
@@ -52,7 +52,7 @@ void evaluate(const RoundStep& step, std::vector<ClaimOutcome>& out) {
       ++out[part3].premise;
       if (!out_after(u))
         fail(part3, [&] {
-          return where(system, u) + " is in Out(t) (" + std::to_string(step.before[u]) +
+          return region_label(system, u) + " is in Out(t) (" + std::to_string(step.before[u]) +
                  " robots) but not in Out(t+1) (" + std::to_string(step.after[u]) + ")";
         });
     }
@@ -64,8 +64,8 @@ void evaluate(const RoundStep& step, std::vector<ClaimOutcome>& out) {
       return;
     auto what = [&] {
       return std::to_string(robots) + " robot(s) " +
-             (h == g ? "stay in " + where(system, h)
-                     : "move from " + where(system, h) + " to " + where(system, g));
+             (h == g ? "stay in " + region_label(system, h)
+                     : "move from " + region_label(system, h) + " to " + region_label(system, g));
     };
     if (in_before(h)) {
       ++out[part4].premise;
@@ -111,7 +111,7 @@ const RoundLemma& lemma_6_1() {
            "in Out(t)",
            "seed 002 line 242 (conference only; journal Lemma 6.2(4), line 1034)"},
       },
-      evaluate,
+      evaluate_6_1,
       {},
   };
   return lemma;

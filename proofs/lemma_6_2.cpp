@@ -77,7 +77,7 @@ namespace {
 
 enum Claim62 { bound, changes };
 
-void evaluate(const FixpointInstance& instance, std::vector<std::optional<Measurement>>& out) {
+void evaluate_6_2(const FixpointInstance& instance, std::vector<std::optional<Measurement>>& out) {
   const mc::FixpointRun& run = instance.run;
   const std::int64_t m2 = instance.setting.m * instance.setting.m;
   const std::size_t t1 = measured_t1(instance);
@@ -116,7 +116,7 @@ const FixpointLemma& lemma_6_2() {
           {"6.2 step", "In or Out changes in at most 2m^2 rounds (they only grow, Lemma 6.1)",
            "seed 000 line 1036 (the factor 2m^2)", false},
       },
-      evaluate,
+      evaluate_6_2,
   };
   return lemma;
 }

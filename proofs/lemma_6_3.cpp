@@ -22,7 +22,7 @@ namespace {
 
 enum Claim63 { after_t1, from_t0 };
 
-void evaluate(const FixpointInstance& instance, std::vector<std::optional<Measurement>>& out) {
+void evaluate_6_3(const FixpointInstance& instance, std::vector<std::optional<Measurement>>& out) {
   const std::int64_t m2 = instance.setting.m * instance.setting.m;
   const std::size_t t1 = measured_t1(instance);
   const std::size_t t2 = measured_t2(instance, t1);
@@ -52,7 +52,7 @@ const FixpointLemma& lemma_6_3() {
            "t2 <= t0 + 2m^2(1+rho3)m^2n^2 + (1+rho3)m^2n^2, t0 = 0 (Lemmas 6.2 and 6.3 chained)",
            "seed 000 lines 1036, 1044"},
       },
-      evaluate,
+      evaluate_6_3,
   };
   return lemma;
 }

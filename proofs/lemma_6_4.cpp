@@ -63,18 +63,14 @@ template <class Int> struct Inequalities {
   }
 };
 
-std::string where(int m, RegionId u) {
-  return region_name(m, u);
-}
-
 // What g received and sent in the round, for the messages.
 std::string traffic(int m, const mc::Flow& flow, RegionId g, const std::string& name = "g") {
   std::string in, out;
   for (const auto& t : flow.transfers) {
     if (t.to == g)
-      in += (in.empty() ? "" : ", ") + std::to_string(t.robots) + " from " + where(m, t.from);
+      in += (in.empty() ? "" : ", ") + std::to_string(t.robots) + " from " + region_name(m, t.from);
     if (t.from == g)
-      out += (out.empty() ? "" : ", ") + std::to_string(t.robots) + " to " + where(m, t.to);
+      out += (out.empty() ? "" : ", ") + std::to_string(t.robots) + " to " + region_name(m, t.to);
   }
   return name + " receives " + (in.empty() ? std::string("nothing") : in) + " and sends " +
          (out.empty() ? std::string("nothing") : out);
@@ -126,7 +122,7 @@ void evaluate_with(const RoundStep& step, std::vector<ClaimOutcome>& out, const 
         if (!out_t(h) || !(y[g] < y[h]))
           continue;
         auto pair = [&] {
-          return "g = " + where(m, g) + ", h = " + where(m, h) +
+          return "g = " + region_name(m, g) + ", h = " + region_name(m, h) +
                  ": y_g(t) = " + std::to_string(y[g]) + " < y_h(t) = " + std::to_string(y[h]);
         };
         if (y[h] == max_all) {
@@ -150,7 +146,7 @@ void evaluate_with(const RoundStep& step, std::vector<ClaimOutcome>& out, const 
           ++out[journal_1].premise;
           if (!(y1[g] < y[h]))
             fail(journal_1, [&] {
-              return "u = " + where(m, g) + ", v = " + where(m, h) +
+              return "u = " + region_name(m, g) + ", v = " + region_name(m, h) +
                      ": y(u,t) = " + std::to_string(y[g]) + " < y(v,t) = " + std::to_string(y[h]) +
                      " = max over nbrs(u) and Out(t), but y(u,t+1) = " + std::to_string(y1[g]) +
                      " is not < " + std::to_string(y[h]) + " (" + traffic(m, step.flow, g, "u") +
@@ -185,14 +181,15 @@ void evaluate_with(const RoundStep& step, std::vector<ClaimOutcome>& out, const 
         ++out[sigma_as_stated].premise;
         if (!ineq.at_least_gap(y[h], q[h], y[g], q[g]))
           fail(sigma_as_stated, [&] {
-            return "g = " + where(m, g) + ", h = " + where(m, h) + ": |" + fraction(y[h], q[h]) +
-                   " - " + fraction(y[g], q[g]) + "| < 1/" + std::to_string(q_max * q_max);
+            return "g = " + region_name(m, g) + ", h = " + region_name(m, h) + ": |" +
+                   fraction(y[h], q[h]) + " - " + fraction(y[g], q[g]) + "| < 1/" +
+                   std::to_string(q_max * q_max);
           });
       }
       if (!density_less(y[g], q[g], y[h], q[h]))
         continue;
       auto pair = [&] {
-        return "g = " + where(m, g) + ", h = " + where(m, h) +
+        return "g = " + region_name(m, g) + ", h = " + region_name(m, h) +
                ": y_g(t)/q_g = " + fraction(y[g], q[g]) + " < y_h(t)/q_h = " + fraction(y[h], q[h]);
       };
       auto after = [&] { return "y_g(t+1)/q_g = " + fraction(y1[g], q[g]); };
@@ -227,7 +224,7 @@ void evaluate_with(const RoundStep& step, std::vector<ClaimOutcome>& out, const 
         ++out[journal_2].premise;
         if (!ineq.journal_gap(y1[g], q[g], y[h], q[h]))
           fail(journal_2, [&] {
-            return "u = " + where(m, g) + ", v = " + where(m, h) +
+            return "u = " + region_name(m, g) + ", v = " + region_name(m, h) +
                    ": y(u,t)/q_u = " + fraction(y[g], q[g]) +
                    " < y(v,t)/q_v = " + fraction(y[h], q[h]) +
                    " = max over nbrs(u) and In(t), but y(u,t+1)/q_u = " + fraction(y1[g], q[g]) +
@@ -242,7 +239,7 @@ void evaluate_with(const RoundStep& step, std::vector<ClaimOutcome>& out, const 
   }
 }
 
-void evaluate(const RoundStep& step, std::vector<ClaimOutcome>& out) {
+void evaluate_6_4(const RoundStep& step, std::vector<ClaimOutcome>& out) {
   const mc::AssignParams& params = step.system.assign_params();
   // The widest product is y·n·q_max²·b (journal_gap). 128-bit integers when it stays below
   // 2^120 (counts < 2^40, q < 2^20, b < 2^20: every family and search here), 256-bit when
@@ -280,8 +277,8 @@ std::optional<std::string> journal_window(const RoundStep& step) {
   auto boundary_move = [&](const mc::Flow& flow) -> std::optional<std::string> {
     for (const auto& t : flow.transfers)
       if (q[t.from] == 0 && q[t.to] != 0)
-        return std::to_string(t.robots) + " robot(s) from " + where(m, t.from) + " (Out) to " +
-               where(m, t.to) + " (In)";
+        return std::to_string(t.robots) + " robot(s) from " + region_name(m, t.from) +
+               " (Out) to " + region_name(m, t.to) + " (In)";
     return std::nullopt;
   };
   if (auto move = boundary_move(step.flow))
@@ -344,7 +341,7 @@ const RoundLemma& lemma_6_4() {
            "sigma/q_max^2",
            "seed 002 line 260", false},
       },
-      evaluate,
+      evaluate_6_4,
       journal_window,
   };
   return lemma;

@@ -18,7 +18,7 @@ mc::Rational t_out_bound(const FixpointInstance& instance) {
 
 namespace {
 
-enum Claim65 { chain, window };
+enum Claim65 { chain, t_out_window };
 
 void evaluate_6_5(const FixpointInstance& instance, std::vector<std::optional<Measurement>>& out) {
   const mc::RoundSystem& system = instance.system;
@@ -46,7 +46,7 @@ void evaluate_6_5(const FixpointInstance& instance, std::vector<std::optional<Me
     if (moves)
       t2 = t + 1;
   }
-  out[window] =
+  out[t_out_window] =
       Measurement{static_cast<std::int64_t>(run.t_out) - static_cast<std::int64_t>(t2), m2 * n,
                   "T_out - t2 = " + std::to_string(run.t_out) + " - " + std::to_string(t2) +
                       ", m^2 n = " + std::to_string(m2 * n)};

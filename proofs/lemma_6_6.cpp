@@ -10,9 +10,9 @@ namespace proofs {
 
 namespace {
 
-enum Claim66 { window, total_rounds, lemma5, lemma5_step, lemma5_no_curve };
+enum Claim66 { t_stab_window, total_rounds, lemma5, lemma5_step, lemma5_no_curve };
 
-void evaluate(const FixpointInstance& instance, std::vector<std::optional<Measurement>>& out) {
+void evaluate_6_6(const FixpointInstance& instance, std::vector<std::optional<Measurement>>& out) {
   const mc::RoundSystem& system = instance.system;
   const mc::FixpointRun& run = instance.run;
   const int m = instance.setting.m;
@@ -29,10 +29,10 @@ void evaluate(const FixpointInstance& instance, std::vector<std::optional<Measur
       Measurement{t_stab, total_bound,
                   "T_stab = " + std::to_string(run.t_stab) + ", n = " + std::to_string(n) +
                       ", rho3 = " + mc::to_string(r3)};
-  out[window] = Measurement{t_stab - t_out, window_bound,
-                            "T_stab - T_out = " + std::to_string(run.t_stab) + " - " +
-                                std::to_string(run.t_out) + ", rho3 = " + mc::to_string(r3) +
-                                ", n = " + std::to_string(n)};
+  out[t_stab_window] = Measurement{t_stab - t_out, window_bound,
+                                   "T_stab - T_out = " + std::to_string(run.t_stab) + " - " +
+                                       std::to_string(run.t_out) + ", rho3 = " + mc::to_string(r3) +
+                                       ", n = " + std::to_string(n)};
 
   // |C_out| at T_out: the robots of Out(T_out), i.e. of the active regions off the curve.
   const Counts& at = run.rounds[run.t_out];
@@ -98,7 +98,7 @@ const FixpointLemma& lemma_6_6() {
            "everywhere: no boundary region, nothing ever leaves Out; outside the lemma's premise)",
            "seed 002 line 290", false},
       },
-      evaluate,
+      evaluate_6_6,
   };
   return lemma;
 }

@@ -10,7 +10,7 @@ namespace {
 
 enum Claim67 { spread, step };
 
-void evaluate(const FixpointInstance& instance, std::vector<std::optional<Measurement>>& out) {
+void evaluate_6_7(const FixpointInstance& instance, std::vector<std::optional<Measurement>>& out) {
   const mc::RoundSystem& system = instance.system;
   const Counts& fixed = instance.run.fixpoint();
   const auto& q = system.q();
@@ -79,7 +79,7 @@ const FixpointLemma& lemma_6_7() {
            "10/(q_min rho2) (|lower| <= 4 assumed)",
            "seed 002, proof of Lemma 6", false},
       },
-      evaluate,
+      evaluate_6_7,
   };
   return lemma;
 }

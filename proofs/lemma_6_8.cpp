@@ -24,7 +24,7 @@ using Vector = std::vector<Rational>;
 
 using support::join;
 
-std::string show(const Vector& values) {
+std::string vector_text(const Vector& values) {
   std::vector<std::string> parts;
   for (const Rational& v : values)
     parts.push_back(mc::to_string(v));
@@ -117,7 +117,7 @@ std::vector<Lemma68Tally> fresh_claims() {
 }
 
 // Keeps the counterexample with fewer robots; ties keep the first.
-void record(Lemma68Tally& tally, Lemma68Counterexample example) {
+void record_example(Lemma68Tally& tally, Lemma68Counterexample example) {
   ++tally.violations;
   tally.keep_smallest(std::move(example));
 }
@@ -226,10 +226,10 @@ void check_matrices(const Lemma68Family& family, const Rational& rho1, Partial& 
     Lemma68Tally& radius = out.claims[matrix_radius];
     ++radius.premise;
     if (n > certified)
-      record(radius, matrix_example(radius.claim.id, n, rho1,
-                                    "an LDL^T pivot of I - T or I + T is <= 0 at size " +
-                                        std::to_string(certified + 1) +
-                                        ", so rho(T) >= 1 for n = " + std::to_string(n)));
+      record_example(radius, matrix_example(radius.claim.id, n, rho1,
+                                            "an LDL^T pivot of I - T or I + T is <= 0 at size " +
+                                                std::to_string(certified + 1) +
+                                                ", so rho(T) >= 1 for n = " + std::to_string(n)));
 
     const Eigen::MatrixXd t = dense_t(n, r, false);
     if (!t.isApprox(t.transpose(), 0.0))
@@ -243,8 +243,9 @@ void check_matrices(const Lemma68Family& family, const Rational& rho1, Partial& 
     Lemma68Tally& cross = out.claims[matrix_cross_check];
     ++cross.premise;
     if (!(disagreement <= 1e-12))
-      record(cross, matrix_example(cross.claim.id, n, rho1,
-                                   "largest |Eigen - closed form| = " + number(disagreement)));
+      record_example(cross,
+                     matrix_example(cross.claim.id, n, rho1,
+                                    "largest |Eigen - closed form| = " + number(disagreement)));
     const double rho = spectral_radius(eigen);
     if (rho > out.largest_radius) {
       out.largest_radius = rho;
@@ -271,12 +272,12 @@ void check_matrices(const Lemma68Family& family, const Rational& rho1, Partial& 
     Lemma68Tally& symmetric = out.claims[printed_symmetric];
     ++symmetric.premise;
     if (rho1 / 2 != 1 - rho1)
-      record(symmetric,
-             matrix_example(symmetric.claim.id, n, rho1,
-                            "entry (" + std::to_string(n - 1) + ", " + std::to_string(n) +
-                                ") = rho1/2 = " + mc::to_string(rho1 / 2) + " but entry (" +
-                                std::to_string(n) + ", " + std::to_string(n - 1) +
-                                ") = 1 - rho1 = " + mc::to_string(1 - rho1)));
+      record_example(symmetric,
+                     matrix_example(symmetric.claim.id, n, rho1,
+                                    "entry (" + std::to_string(n - 1) + ", " + std::to_string(n) +
+                                        ") = rho1/2 = " + mc::to_string(rho1 / 2) + " but entry (" +
+                                        std::to_string(n) + ", " + std::to_string(n - 1) +
+                                        ") = 1 - rho1 = " + mc::to_string(1 - rho1)));
     if (n > family.printed_max_interior && n != big)
       continue;
     ++out.printed_matrices;
@@ -313,7 +314,7 @@ void check_matrices(const Lemma68Family& family, const Rational& rho1, Partial& 
     const Rational before = squared_norm(witness);
     const Rational after = squared_norm(apply_printed(witness, rho1));
     if (after > before)
-      record(
+      record_example(
           contracts,
           matrix_example(contracts.claim.id, n, rho1,
                          "||T x||^2 / ||x||^2 = " + number((after / before).convert_to<double>()) +
@@ -499,9 +500,9 @@ void check_dynamics(const Lemma68Family& family, const DynamicsItem& item, std::
         for (std::size_t i = 0; i < interior; ++i)
           if (e_next.values[i] * left_scale != model(i) * e_next.scale) {
             fail(linear_model, [&] {
-              return "e(k+1) = " + show(e_next.rationals()) +
-                     " but T e(k) = " + show(apply_intended(e.rationals(), rho1)) +
-                     " for e(k) = " + show(e.rationals());
+              return "e(k+1) = " + vector_text(e_next.rationals()) +
+                     " but T e(k) = " + vector_text(apply_intended(e.rationals(), rho1)) +
+                     " for e(k) = " + vector_text(e.rationals());
             });
             break;
           }
@@ -512,9 +513,9 @@ void check_dynamics(const Lemma68Family& family, const DynamicsItem& item, std::
             e_next.values[interior - 1] * left_scale !=
                 (diagonal * e.values[interior - 2] + a * e.values[interior - 1]) * e_next.scale)
           fail(printed_dynamics, [&] {
-            return "e(k+1) = " + show(e_next.rationals()) +
-                   " but T_printed e(k) = " + show(apply_printed(e.rationals(), rho1)) +
-                   " for e(k) = " + show(e.rationals());
+            return "e(k+1) = " + vector_text(e_next.rationals()) +
+                   " but T_printed e(k) = " + vector_text(apply_printed(e.rationals(), rho1)) +
+                   " for e(k) = " + vector_text(e.rationals());
           });
         if (norm != 0) {
           // ‖e'‖² < ‖e‖² ⟺ N'·Q² < N·Q'².
@@ -588,9 +589,9 @@ std::vector<std::string> Lemma68Counterexample::lines() const {
     return out;
   }
   out.push_back(claim + ": " + std::to_string(robots) + " robots on [0, " + mc::to_string(*length) +
-                "], rho1 = " + mc::to_string(rho1) + ", start " + show(start));
+                "], rho1 = " + mc::to_string(rho1) + ", start " + vector_text(start));
   out.push_back("  round " + std::to_string(round) + " -> " + std::to_string(round + 1) + ": " +
-                show(before) + " -> " + show(after));
+                vector_text(before) + " -> " + vector_text(after));
   out.push_back("  " + why);
   return out;
 }

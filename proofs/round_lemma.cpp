@@ -62,17 +62,17 @@ Outcomes round_outcomes(const mc::RoundSystem& system, const Counts& counts, std
 }
 
 // The tallies of one run (a setting, a thread's share, a search).
-struct Tallies {
+struct RoundTallies {
   std::vector<ClaimTally> claims;
   std::uint64_t instances = 0, skipped = 0, represented = 0, outcomes = 0, outcomes_represented = 0,
                 sampled = 0;
 
-  explicit Tallies(const RoundLemma& lemma) {
+  explicit RoundTallies(const RoundLemma& lemma) {
     for (const Claim& c : lemma.claims)
       claims.push_back({.claim = c});
   }
 
-  void add(Tallies&& other) {
+  void add(RoundTallies&& other) {
     instances += other.instances;
     skipped += other.skipped;
     represented += other.represented;
@@ -87,7 +87,7 @@ struct Tallies {
 // Checks every claim on every given outcome of one instance.
 void check_instance(const RoundLemma& lemma, const Setting& setting, const mc::RoundSystem& system,
                     const Counts& counts, std::uint64_t orbit, const std::vector<mc::Flow>& flows,
-                    Tallies& tallies, std::vector<ClaimOutcome>& scratch) {
+                    RoundTallies& tallies, std::vector<ClaimOutcome>& scratch) {
   ++tallies.instances;
   tallies.represented += orbit;
   const RobotCount robots = mc::total(counts);
@@ -131,7 +131,7 @@ void check_instance(const RoundLemma& lemma, const Setting& setting, const mc::R
 using support::join;
 
 // The PropertyResult of a finished run. `covered` describes what was checked.
-LemmaCheck finish(const RoundLemma& lemma, Tallies&& tallies, const std::string& covered,
+LemmaCheck finish(const RoundLemma& lemma, RoundTallies&& tallies, const std::string& covered,
                   std::vector<std::pair<std::string, std::string>> figures, bool sample,
                   double seconds, unsigned threads) {
   LemmaCheck check;
@@ -293,7 +293,7 @@ LemmaCheck check_family(const RoundLemma& lemma, const Family& family,
   const auto start = Clock::now();
   const SettingList list = settings(family);
   const std::size_t n = list.settings.size();
-  std::vector<Tallies> per_setting(n, Tallies(lemma));
+  std::vector<RoundTallies> per_setting(n, RoundTallies(lemma));
   std::vector<std::uint64_t> incomplete(n, 0);
   std::atomic<std::size_t> next{0};
   FamilyStop stop(options.limits);
@@ -304,7 +304,7 @@ LemmaCheck check_family(const RoundLemma& lemma, const Family& family,
     for (std::size_t i; !stop.stopped() && (i = next.fetch_add(1)) < n;) {
       const Setting& setting = list.settings[i];
       const mc::RoundSystem system = setting.system();
-      Tallies& tallies = per_setting[i];
+      RoundTallies& tallies = per_setting[i];
       Coverage coverage;
       try {
         coverage = for_each_configuration(
@@ -328,7 +328,7 @@ LemmaCheck check_family(const RoundLemma& lemma, const Family& family,
   };
   run_on_threads(options.threads, work);
 
-  Tallies all(lemma);
+  RoundTallies all(lemma);
   std::uint64_t too_many = 0;
   for (std::size_t i = 0; i < n; ++i) {
     all.add(std::move(per_setting[i]));
@@ -546,7 +546,7 @@ LemmaCheck search_random(const RoundLemma& lemma, const SearchOptions& options) 
     throw std::invalid_argument("random search: need 1 <= min_side <= max_side, max_count >= 0, "
                                 "some k and rho2, and at least one sample");
   SplitMix64 random(options.seed);
-  Tallies tallies(lemma);
+  RoundTallies tallies(lemma);
   std::vector<std::string> curves = curve_names();
   curves.push_back("random");
   std::vector<ClaimOutcome> scratch;

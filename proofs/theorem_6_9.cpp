@@ -103,7 +103,8 @@ std::optional<std::vector<Rational>> spacing_errors(const mc::PositionSystem& sy
 }
 
 // Max over In of y_u/q_u minus min, against 10(2m − 1)/(q_min ρ2), q in units of σ.
-std::pair<Rational, Rational> spread(const mc::RoundSystem& system, const Counts& counts, int m) {
+std::pair<Rational, Rational> density_spread(const mc::RoundSystem& system, const Counts& counts,
+                                             int m) {
   const auto& q = system.q();
   std::optional<Rational> low, high;
   QuantisedLength q_min = 0;
@@ -276,7 +277,7 @@ Outcome run_one(const mc::PositionSystem& system, const std::vector<mc::Robot>& 
     return outcome;
 
   const mc::PositionRound& settled = rounds[std::min(*fixed_from, rounds.size() - 1)];
-  const auto [value, bound] = spread(system.counts(), settled.counts, m);
+  const auto [value, bound] = density_spread(system.counts(), settled.counts, m);
   Outcome::Verdict& prop = outcome.claims[proportional].emplace();
   prop.violated = value > bound;
   prop.why =
@@ -324,15 +325,15 @@ Outcome run_one(const mc::PositionSystem& system, const std::vector<mc::Robot>& 
   return outcome;
 }
 
-struct Tallies {
+struct PositionTallies {
   std::vector<PositionalTally> claims;
   std::uint64_t runs = 0, rounds = 0;
 };
 
 // Adds one run's outcome to the tallies of its reading.
-void record(Tallies& tallies, std::size_t reading, const PositionSetting& setting,
-            std::size_t setting_index, const std::vector<mc::Robot>& robots,
-            const Outcome& outcome) {
+void record_outcome(PositionTallies& tallies, std::size_t reading, const PositionSetting& setting,
+                    std::size_t setting_index, const std::vector<mc::Robot>& robots,
+                    const Outcome& outcome) {
   ++tallies.runs;
   tallies.rounds += outcome.rounds;
   for (int kind = 0; kind < kinds; ++kind) {
@@ -466,7 +467,7 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
     }
 
   auto fresh = [&] {
-    Tallies t;
+    PositionTallies t;
     for (mc::Membership membership : positions.memberships)
       for (int kind = 0; kind < kinds; ++kind)
         t.claims.push_back({.claim = {claim_id(static_cast<ClaimKind>(kind), membership), {}, {}}});
@@ -508,7 +509,7 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
   };
 
   const std::size_t jobs = positions.samples > 0 ? samples.size() : settings.size();
-  std::vector<Tallies> per_setting(jobs, fresh());
+  std::vector<PositionTallies> per_setting(jobs, fresh());
   std::atomic<std::size_t> next{0};
   // The count-level check shares the property's limits: when it used them up, no run
   // with positions starts.
@@ -518,20 +519,20 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
       const PositionSetting& setting = settings[samples[i].setting];
       const mc::PositionSystem system = system_of(setting);
       const Outcome outcome = run_one(system, samples[i].robots, setting.m, positions);
-      record(per_setting[i], reading_of(setting), setting, samples[i].setting, samples[i].robots,
-             outcome);
+      record_outcome(per_setting[i], reading_of(setting), setting, samples[i].setting,
+                     samples[i].robots, outcome);
     }
     for (std::size_t i;
          positions.samples == 0 && !stop.stopped() && (i = next.fetch_add(1)) < jobs;) {
       const PositionSetting& setting = settings[i];
       const mc::PositionSystem system = system_of(setting);
       const std::size_t reading = reading_of(setting);
-      Tallies& tallies = per_setting[i];
+      PositionTallies& tallies = per_setting[i];
       Counts counts(system.curve().size(), 0);
       while (stop.next()) {
         const std::vector<mc::Robot> robots = place(system.curve(), counts);
         const Outcome outcome = run_one(system, robots, setting.m, positions);
-        record(tallies, reading, setting, i, robots, outcome);
+        record_outcome(tallies, reading, setting, i, robots, outcome);
         // The next configuration: the last region changes fastest.
         std::size_t u = counts.size();
         while (u > 0 && counts[u - 1] == positions.max_count)
@@ -544,8 +545,8 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
   };
   run_on_threads(options.threads, work);
 
-  Tallies all = fresh();
-  for (Tallies& t : per_setting) {
+  PositionTallies all = fresh();
+  for (PositionTallies& t : per_setting) {
     all.runs += t.runs;
     all.rounds += t.rounds;
     for (std::size_t c = 0; c < all.claims.size(); ++c)

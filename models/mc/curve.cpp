@@ -12,6 +12,10 @@ Point to_point(const RationalPoint& p) {
   return {Real(p.x), Real(p.y)};
 }
 
+std::string to_string(const RationalPoint& p) {
+  return "(" + to_string(p.x) + "," + to_string(p.y) + ")";
+}
+
 Real distance(const Point& a, const Point& b) {
   const Real dx = a.x - b.x, dy = a.y - b.y;
   return sqrt(dx * dx + dy * dy);

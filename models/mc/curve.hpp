@@ -37,6 +37,8 @@ struct Point {
 };
 
 Point to_point(const RationalPoint& p);
+// "(x,y)", exact, as messages and logs write a point.
+std::string to_string(const RationalPoint& p);
 Real distance(const Point& a, const Point& b);
 
 // Segments between consecutive vertices; a closed polyline also joins the last vertex to

@@ -10,10 +10,6 @@ namespace mc {
 
 namespace {
 
-std::string format(const RationalPoint& p) {
-  return "(" + to_string(p.x) + "," + to_string(p.y) + ")";
-}
-
 // "√2", "√(5/4)"
 std::string format_root(const Rational& squared) {
   const std::string radicand = to_string(squared);
@@ -28,16 +24,16 @@ Curve exact_only(Curve curve) {
     const std::string component = several ? "component " + std::to_string(c) + ", " : "";
     if (const auto* circle = std::get_if<Circle>(&curve.components()[c]))
       throw std::invalid_argument(prefix + "component " + std::to_string(c) +
-                                  " is a circle (centre " + format(circle->centre) + ", radius " +
-                                  to_string(circle->radius) + "), whose arcs have no rational " +
-                                  "length");
+                                  " is a circle (centre " + to_string(circle->centre) +
+                                  ", radius " + to_string(circle->radius) +
+                                  "), whose arcs have no rational " + "length");
     const auto& polyline = std::get<Polyline>(curve.components()[c]);
     for (std::size_t j = 0; j < segment_count(polyline); ++j) {
       const RationalPoint a = segment_begin(polyline, j), e = segment_end(polyline, j);
       const Rational squared = (e.x - a.x) * (e.x - a.x) + (e.y - a.y) * (e.y - a.y);
       if (!exact::sqrt_if_square(squared))
         throw std::invalid_argument(prefix + component + "segment " + std::to_string(j) + " from " +
-                                    format(a) + " to " + format(e) + " has length " +
+                                    to_string(a) + " to " + to_string(e) + " has length " +
                                     format_root(squared));
     }
   }

@@ -16,10 +16,6 @@ std::vector<QuantisedLength> quantised(const ExactCurve& curve) {
   return {q.begin(), q.end()};
 }
 
-std::string format(const RationalPoint& p) {
-  return "(" + to_string(p.x) + "," + to_string(p.y) + ")";
-}
-
 // A Fisher–Yates shuffle driven by mt19937_64 seeded through seed_seq: both are specified
 // exactly by the standard, so the order is the same with every standard library
 // (std::shuffle and the distributions are not). The modulo bias is irrelevant here.
@@ -47,7 +43,7 @@ void PositionSystem::check_robots(const std::vector<Robot>& robots) const {
           " before " + std::to_string(robot.id));
     const RationalPoint& p = robot.position;
     if (p.x < 0 || p.y < 0 || p.x > side || p.y > side)
-      throw std::invalid_argument("robot " + std::to_string(robot.id) + " at " + format(p) +
+      throw std::invalid_argument("robot " + std::to_string(robot.id) + " at " + to_string(p) +
                                   " lies outside the deployment square [0, " + to_string(side) +
                                   "]^2");
     if (robot.assigned && *robot.assigned >= curve_.size())
@@ -238,8 +234,8 @@ std::string format_round(const PositionRound& round) {
     out << " #" << move.robot << ' ' << move.from << "->" << move.to;
   out << '\n';
   for (std::size_t i = 0; i < round.robots.size(); ++i)
-    out << "  #" << round.robots[i].id << " at " << format(round.robots[i].position) << " VN "
-        << round.members[i] << " -> " << format(round.targets[i].position) << '\n';
+    out << "  #" << round.robots[i].id << " at " << to_string(round.robots[i].position) << " VN "
+        << round.members[i] << " -> " << to_string(round.targets[i].position) << '\n';
   return out.str();
 }
 
