@@ -27,8 +27,8 @@ ExploreOptions options_for(StoreKind store, unsigned threads = 1) {
   return options;
 }
 
-Exploration run(const tioa::Automaton& a, const ExploreOptions& options,
-                const ExploreHooks& hooks = {}) {
+Exploration explore_in(const tioa::Automaton& a, const ExploreOptions& options,
+                       const ExploreHooks& hooks = {}) {
   const tioa::SuccessorGenerator generator(a);
   return explore(generator, a.start(), options, hooks);
 }
@@ -85,30 +85,31 @@ TEST_CASE("fingerprint store: the ids, parents and counts of the exact store, fo
           "[checker][fingerprint][threads]") {
   SECTION("Fischer N=6: levels of up to 9817 new states, inserted concurrently") {
     const auto fischer = fischer::build(6, 1, 2);
-    const Exploration exact = run(fischer.system, options_for(StoreKind::exact));
+    const Exploration exact = explore_in(fischer.system, options_for(StoreKind::exact));
     CHECK(exact.store.size() == 65299); // tools/reference/peer_models.py
     for (unsigned threads : {1u, 2u, 4u}) {
       INFO(threads << " threads");
-      require_same_as_exact(exact,
-                            run(fischer.system, options_for(StoreKind::fingerprint, threads)));
+      require_same_as_exact(
+          exact, explore_in(fischer.system, options_for(StoreKind::fingerprint, threads)));
     }
   }
   SECTION("token ring N=7 K=6: 279936 start states") {
     const auto ring = token_ring::build(7, 6);
-    const Exploration exact = run(ring.system, options_for(StoreKind::exact));
+    const Exploration exact = explore_in(ring.system, options_for(StoreKind::exact));
     for (unsigned threads : {1u, 2u})
-      require_same_as_exact(exact, run(ring.system, options_for(StoreKind::fingerprint, threads)));
+      require_same_as_exact(exact,
+                            explore_in(ring.system, options_for(StoreKind::fingerprint, threads)));
   }
   SECTION("the state limit, inside a level of more than 4096 states") {
     const auto fischer = fischer::build(6, 1, 2);
     ExploreOptions options = options_for(StoreKind::exact);
     options.limits.max_states = 30000;
-    const Exploration exact = run(fischer.system, options);
+    const Exploration exact = explore_in(fischer.system, options);
     REQUIRE(exact.stop == StopReason::state_limit);
     for (unsigned threads : {1u, 2u}) {
       ExploreOptions fp = options_for(StoreKind::fingerprint, threads);
       fp.limits.max_states = 30000;
-      require_same_as_exact(exact, run(fischer.system, fp));
+      require_same_as_exact(exact, explore_in(fischer.system, fp));
     }
   }
   SECTION("the first target, from a level of more than 4096 states") {
@@ -122,12 +123,12 @@ TEST_CASE("fingerprint store: the ids, parents and counts of the exact store, fo
         waiting += State(s, 0).code(locations[p]) == 2 && State(s, 0).code(clocks[p]) >= 2 ? 1 : 0;
       return waiting == 3;
     };
-    const Exploration exact = run(a, options_for(StoreKind::exact), hooks);
+    const Exploration exact = explore_in(a, options_for(StoreKind::exact), hooks);
     REQUIRE(exact.found);
     const tioa::SuccessorGenerator generator(a);
     for (unsigned threads : {1u, 2u, 4u}) {
       INFO(threads << " threads");
-      const Exploration fp = run(a, options_for(StoreKind::fingerprint, threads), hooks);
+      const Exploration fp = explore_in(a, options_for(StoreKind::fingerprint, threads), hooks);
       require_same_as_exact(exact, fp);
       CHECK(fp.found_state == stored(exact, *exact.found));
       require_same_trace(trace_to(generator, exact, *exact.found),
@@ -141,8 +142,8 @@ TEST_CASE("fingerprint store: traces rebuilt by re-execution are the exact store
   const auto fischer = fischer::build(3, 1, 2);
   const auto& a = fischer.system;
   const tioa::SuccessorGenerator generator(a);
-  const Exploration exact = run(a, options_for(StoreKind::exact));
-  const Exploration fp = run(a, options_for(StoreKind::fingerprint));
+  const Exploration exact = explore_in(a, options_for(StoreKind::exact));
+  const Exploration fp = explore_in(a, options_for(StoreKind::fingerprint));
   REQUIRE(fp.store.size() == 357);
   for (StateId id = 0; id < fp.store.size(); ++id) {
     const Trace trace = trace_to(generator, fp, id);
@@ -224,7 +225,7 @@ TEST_CASE("fingerprint store: the memory limit holds", "[checker][fingerprint][l
   const auto fischer = fischer::build(6, 1, 2);
   ExploreOptions options = options_for(StoreKind::fingerprint, 2);
   options.limits.max_memory_bytes = 400 << 10;
-  const Exploration ex = run(fischer.system, options);
+  const Exploration ex = explore_in(fischer.system, options);
   CHECK(ex.stop == StopReason::memory_limit);
   CHECK(ex.peak_memory_bytes <= options.limits.max_memory_bytes);
 }
@@ -241,10 +242,10 @@ TEST_CASE("fingerprint store: the checks that read states or edges after the sea
   CHECK_THROWS_AS(R(ring.system, fp), std::invalid_argument);
   ExploreHooks edges;
   edges.record_edges = true;
-  CHECK_THROWS_AS(run(ring.system, fp, edges), std::invalid_argument);
+  CHECK_THROWS_AS(explore_in(ring.system, fp, edges), std::invalid_argument);
   ExploreHooks canonical;
   canonical.canonical = [](Word*) {};
-  CHECK_THROWS_AS(run(ring.system, fp, canonical), std::invalid_argument);
+  CHECK_THROWS_AS(explore_in(ring.system, fp, canonical), std::invalid_argument);
 
   Property stabilisation{"convergence", "", PropertyKind::stabilisation, legal, "L", {}, ""};
   CHECK_THROWS_AS(run_property(ring.system, stabilisation, fp), std::invalid_argument);

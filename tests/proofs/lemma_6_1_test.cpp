@@ -3,21 +3,10 @@
 #include <catch2/catch.hpp>
 
 #include "proofs/lemma_6_1.hpp"
+#include "tests/proofs/small_family.hpp"
 
 using namespace proofs;
-
-namespace {
-
-Family small_family(mc::Neighbourhood nbh) {
-  Family f;
-  f.sides = {{1, 3}, {2, 4}, {3, 2}};
-  f.neighbourhoods = {nbh};
-  f.ks = {1, 2};
-  f.rho2s = {{1, 2}, {9, 10}};
-  return f;
-}
-
-} // namespace
+using proofs::testing::small_round_family;
 
 TEST_CASE("lemma 6.1: every part holds on a small family, both neighbourhoods",
           "[proofs][lemma-6.1]") {
@@ -30,7 +19,7 @@ TEST_CASE("lemma 6.1: every part holds on a small family, both neighbourhoods",
   };
   for (const Row& row : {Row{mc::Neighbourhood::four, 162'488, 566'148, 162'530},
                          Row{mc::Neighbourhood::eight, 162'488, 566'148, 162'515}}) {
-    const LemmaCheck check = check_lemma_6_1(small_family(row.nbh));
+    const LemmaCheck check = check_lemma_6_1(small_round_family(row.nbh));
     INFO("neighbourhood " << to_string(row.nbh));
     CHECK(check.result.name == "lemma-6.1");
     CHECK(check.result.kind == "round-lemma");
@@ -68,7 +57,7 @@ TEST_CASE("lemma 6.1: a false strengthening is violated, with the smallest count
                            std::to_string(step.after[u]);
       }
   };
-  Family f = small_family(mc::Neighbourhood::four);
+  Family f = small_round_family(mc::Neighbourhood::four);
   const LemmaCheck check = check_family(wrong, f);
   CHECK(check.result.verdict == checker::Verdict::violated);
   REQUIRE(check.counterexample);

@@ -3,19 +3,12 @@
 #include <catch2/catch.hpp>
 
 #include "proofs/lemma_6_4.hpp"
+#include "tests/proofs/small_family.hpp"
 
 using namespace proofs;
+using proofs::testing::small_round_family;
 
 namespace {
-
-Family small_family(mc::Neighbourhood nbh) {
-  Family f;
-  f.sides = {{1, 3}, {2, 4}, {3, 2}};
-  f.neighbourhoods = {nbh};
-  f.ks = {1, 2};
-  f.rho2s = {{1, 2}, {9, 10}};
-  return f;
-}
 
 Instance instance(int m, mc::Neighbourhood nbh, std::vector<QuantisedLength> q, Counts counts,
                   RobotCount k = 1, mc::Rational rho2 = {9, 10}) {
@@ -43,7 +36,7 @@ std::size_t index_of(const std::string& id) {
 TEST_CASE("lemma 6.4, 4-neighbourhood: (1) and the journal's (2) hold; the conference's (2) "
           "fails where a boundary region sends",
           "[proofs][lemma-6.4]") {
-  const LemmaCheck check = check_lemma_6_4(small_family(mc::Neighbourhood::four));
+  const LemmaCheck check = check_lemma_6_4(small_round_family(mc::Neighbourhood::four));
   CHECK(check.result.verdict == checker::Verdict::violated);
   CHECK(check.instances == 162'488); // as for Lemma 6.1: the same family
   CHECK(check.outcomes == 162'530);
@@ -76,7 +69,7 @@ TEST_CASE("lemma 6.4, 4-neighbourhood: (1) and the journal's (2) hold; the confe
 
 TEST_CASE("lemma 6.4, 8-neighbourhood: the journal's (2) fails when five neighbours send",
           "[proofs][lemma-6.4]") {
-  const LemmaCheck check = check_lemma_6_4(small_family(mc::Neighbourhood::eight));
+  const LemmaCheck check = check_lemma_6_4(small_round_family(mc::Neighbourhood::eight));
   CHECK(check.result.verdict == checker::Verdict::violated);
   CHECK(check.claim("6.4(2)").verdict() == checker::Verdict::violated);
   CHECK(check.claim("L2(2)").verdict() == checker::Verdict::violated);
@@ -110,7 +103,7 @@ TEST_CASE("lemma 6.4, 8-neighbourhood: part (1) fails from a plateau of 6 around
 TEST_CASE("lemma 6.4: the sigma/q_max^2 step is decided exactly", "[proofs][lemma-6.4]") {
   // q = 1 and 3, q_max = 3: densities 1/3 and 2/3 differ by exactly 1/3 >= 1/9; 4/9 would
   // not be a density here. The 4-neighbourhood line-1-3 family exercises the step.
-  Family f = small_family(mc::Neighbourhood::four);
+  Family f = small_round_family(mc::Neighbourhood::four);
   f.curves = {"line-1-3", "checker-1-3", "hub-3"};
   const LemmaCheck check = check_lemma_6_4(f);
   CHECK(check.claim("L2(2) sigma step (as stated)").verdict() == checker::Verdict::holds);

@@ -15,4 +15,16 @@ inline Family small_family(mc::Neighbourhood nbh) {
   return f;
 }
 
+// The small family the round lemma tests (6.1, 6.4) pin their figures on: 1×1 with counts
+// 0..3, 2×2 with counts 0..4 and 3×3 with counts 0..2, every curve, k ∈ {1, 2},
+// ρ2 ∈ {1/2, 9/10}.
+inline Family small_round_family(mc::Neighbourhood nbh) {
+  Family f;
+  f.sides = {{1, 3}, {2, 4}, {3, 2}};
+  f.neighbourhoods = {nbh};
+  f.ks = {1, 2};
+  f.rho2s = {{1, 2}, {9, 10}};
+  return f;
+}
+
 } // namespace proofs::testing

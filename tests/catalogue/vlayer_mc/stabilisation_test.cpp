@@ -13,7 +13,8 @@ using vl_test::figure;
 namespace {
 
 // Every run here reads Def 7.1(2) with the window closed (finding F1).
-vl_test::PropertyRun run(const std::string& property, std::vector<std::string> settings) {
+vl_test::PropertyRun run_stabilisation(const std::string& property,
+                                       std::vector<std::string> settings) {
   settings.push_back("window=closed");
   return vl_test::run_property(property, settings);
 }
@@ -24,7 +25,7 @@ vl_test::PropertyRun run(const std::string& property, std::vector<std::string> s
 // its real position between GPS updates, (4a), until time 7 against the bound 2. The note
 // names the repairs; D25 alone leaves junk reports in M_u, (2), until time 6.
 TEST_CASE("vlayer-mc lemma-7.3 on 1x1: the paper's CN and VN fail it", "[vlayer]") {
-  const auto [r, system] = run("lemma-7.3", {"cols=1"});
+  const auto [r, system] = run_stabilisation("lemma-7.3", {"cols=1"});
   CHECK(r.verdict == checker::Verdict::violated);
   CHECK(r.worst_time == 7u);
   CHECK_THAT(r.message, Catch::Contains("breaks (4a) CN_0"));
@@ -41,7 +42,7 @@ TEST_CASE("vlayer-mc lemma-7.3 on 1x1: the paper's CN and VN fail it", "[vlayer]
   CHECK(noted("D25 cn_repair=1"));
   CHECK(noted("D26 vn_repair=1"));
 
-  const auto cn_only = run("lemma-7.3", {"cols=1", "cn_repair=1"}).result;
+  const auto cn_only = run_stabilisation("lemma-7.3", {"cols=1", "cn_repair=1"}).result;
   CHECK(cn_only.verdict == checker::Verdict::violated);
   CHECK(cn_only.worst_time == 6u);
   CHECK_THAT(cn_only.message, Catch::Contains("breaks (2) VN_0"));
@@ -49,7 +50,7 @@ TEST_CASE("vlayer-mc lemma-7.3 on 1x1: the paper's CN and VN fail it", "[vlayer]
 
 // Sampled, so never "holds": the bound ε_sample + 1 = 2 is met, and reached.
 TEST_CASE("vlayer-mc lemma-7.3 on 1x1, repaired: in L1MC from time 2 on every sample", "[vlayer]") {
-  const auto [r, system] = run("lemma-7.3", {"cols=1", "cn_repair=1", "vn_repair=1"});
+  const auto [r, system] = run_stabilisation("lemma-7.3", {"cols=1", "cn_repair=1", "vn_repair=1"});
   CHECK(r.verdict == checker::Verdict::incomplete);
   CHECK(r.worst_time == 2u);
   CHECK(figure(r, "bound") == "2 quanta");
@@ -64,7 +65,8 @@ TEST_CASE("vlayer-mc lemma-7.3 on 1x1, repaired: in L1MC from time 2 on every sa
 // L1MC at time 2 = ε_sample + 1: a real counterexample. With filter_targets (D28) the CN
 // ignores such targets and every sample meets the bound.
 TEST_CASE("vlayer-mc lemma-7.3 on 1x2: finding F5, and D28", "[vlayer]") {
-  const auto [r, system] = run("lemma-7.3", {"samples=200", "cn_repair=1", "vn_repair=1"});
+  const auto [r, system] =
+      run_stabilisation("lemma-7.3", {"samples=200", "cn_repair=1", "vn_repair=1"});
   CHECK(r.verdict == checker::Verdict::violated);
   CHECK(r.worst_time == 3u);
   CHECK_THAT(r.message, Catch::Contains("breaks (4c) CN_0"));
@@ -73,8 +75,9 @@ TEST_CASE("vlayer-mc lemma-7.3 on 1x2: finding F5, and D28", "[vlayer]") {
   std::string why;
   CHECK(checker::replay(tioa::SuccessorGenerator(system), *r.trace, &why));
 
-  const auto filtered =
-      run("lemma-7.3", {"samples=200", "cn_repair=1", "vn_repair=1", "filter_targets=1"}).result;
+  const auto filtered = run_stabilisation("lemma-7.3", {"samples=200", "cn_repair=1", "vn_repair=1",
+                                                        "filter_targets=1"})
+                            .result;
   CHECK(filtered.verdict == checker::Verdict::incomplete);
   CHECK(filtered.worst_time == 2u);
 }
@@ -82,7 +85,7 @@ TEST_CASE("vlayer-mc lemma-7.3 on 1x2: finding F5, and D28", "[vlayer]") {
 // Lemma 7.4 speaks of every L1MC state; the start states are a sample of U(VLNodes), so the
 // L1MC states they reach are a part of L1MC: incomplete, never holds (issue 15).
 TEST_CASE("vlayer-mc lemma-7.4 on 1x1: from the L1MC states reached, LMC within 7", "[vlayer]") {
-  const auto [r, system] = run("lemma-7.4", {"cols=1"});
+  const auto [r, system] = run_stabilisation("lemma-7.4", {"cols=1"});
   CHECK(r.verdict == checker::Verdict::incomplete);
   CHECK(r.coverage.starts == checker::Starts::sampled);
   CHECK(r.coverage.over == "L1MC (Def 7.1)");
@@ -97,7 +100,7 @@ TEST_CASE("vlayer-mc lemma-7.4 on 1x1: from the L1MC states reached, LMC within 
 // The paper's CN and VN: Lemma 7.3 fails, and LMC is reached at 10 against the bound 8, above
 // what the known part of LMC can confirm (a witness, not a counterexample: D29).
 TEST_CASE("vlayer-mc theorem-7.5 on 1x1: the paper's CN and VN are not confirmed", "[vlayer]") {
-  const auto [r, system] = run("theorem-7.5", {"cols=1"});
+  const auto [r, system] = run_stabilisation("theorem-7.5", {"cols=1"});
   CHECK(r.verdict == checker::Verdict::incomplete);
   CHECK(r.worst_time == 10u);
   CHECK_THAT(r.message, Catch::Contains("not confirmed"));
@@ -105,7 +108,8 @@ TEST_CASE("vlayer-mc theorem-7.5 on 1x1: the paper's CN and VN are not confirmed
 }
 
 TEST_CASE("vlayer-mc theorem-7.5 on 1x1, repaired: directly and through Lemma 3.4", "[vlayer]") {
-  const auto [r, system] = run("theorem-7.5", {"cols=1", "cn_repair=1", "vn_repair=1"});
+  const auto [r, system] =
+      run_stabilisation("theorem-7.5", {"cols=1", "cn_repair=1", "vn_repair=1"});
   CHECK(r.verdict == checker::Verdict::incomplete); // sampled start states
   CHECK(r.worst_time == 6u);
   CHECK(figure(r, "bound") == "8 quanta");

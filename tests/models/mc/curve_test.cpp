@@ -12,21 +12,14 @@
 
 #include "models/mc/curve_local.hpp"
 #include "models/mc/curve_simulation.hpp"
+#include "tests/models/mc/exact_values.hpp"
 
 using namespace mc;
+using mc::testing::at;
+using mc::testing::frac;
+using mc::testing::grid;
 
 namespace {
-
-Rational frac(long n, long d = 1) {
-  return Rational(n, d);
-}
-RationalPoint at(Rational x, Rational y) {
-  return {std::move(x), std::move(y)};
-}
-
-GridTiling grid(int m) {
-  return GridTiling(m, Neighbourhood::four);
-}
 
 bool close(const Real& a, const Real& b, const Real& tolerance = Real("1e-60")) {
   return abs(a - b) <= tolerance;

@@ -10,26 +10,20 @@
 
 #include "models/mc/curve_simulation.hpp"
 #include "models/mc/exact_local_curve.hpp"
+#include "tests/models/mc/exact_values.hpp"
 
 using namespace mc;
+using mc::testing::at;
+using mc::testing::frac;
+using mc::testing::grid;
 
 namespace {
 
-Rational frac(long n, long d = 1) {
-  return Rational(n, d);
-}
-RationalPoint at(Rational x, Rational y) {
-  return {std::move(x), std::move(y)};
-}
-GridTiling grid(int m) {
-  return GridTiling(m, Neighbourhood::four);
-}
-
-bool close(const Real& a, const Real& b) {
+bool near(const Real& a, const Real& b) {
   return abs(a - b) <= Real("1e-40");
 }
-bool close(const RationalPoint& a, const Point& b) {
-  return close(Real(a.x), b.x) && close(Real(a.y), b.y);
+bool near(const RationalPoint& a, const Point& b) {
+  return near(Real(a.x), b.x) && near(Real(a.y), b.y);
 }
 
 std::string refusal(const Curve& curve, int m) {
@@ -59,11 +53,11 @@ void cross_check(const ExactCurve& exact, std::uint64_t seed) {
     CHECK(mine.q == rounded.q(u));
     CHECK(mine.inf_owned == part.inf_owned);
     CHECK(mine.sup_owned == part.sup_owned);
-    CHECK(close(Real(mine.inf), part.inf));
-    CHECK(close(Real(mine.inf + mine.length), part.sup));
+    CHECK(near(Real(mine.inf), part.inf));
+    CHECK(near(Real(mine.inf + mine.length), part.sup));
     for (long k = 0; k <= 8; ++k) {
       const Rational s = mine.length * frac(k, 8);
-      CHECK(close(exact.point(u, s), rounded.point(u, Real(mine.inf + s))));
+      CHECK(near(exact.point(u, s), rounded.point(u, Real(mine.inf + s))));
       CHECK(exact.parameter(u, exact.point(u, s)).has_value());
     }
     for (int trial = 0; trial < 40; ++trial) {
@@ -71,9 +65,9 @@ void cross_check(const ExactCurve& exact, std::uint64_t seed) {
                             frac(static_cast<long>(random() % (side + 1)), 97)};
       const ExactNearest mine_nearest = exact.nearest(u, x);
       const NearestPoint their = rounded.nearest(u, to_point(x));
-      CHECK(close(mine_nearest.point, their.point));
-      CHECK(close(Real(mine.inf + mine_nearest.parameter), their.parameter));
-      CHECK(close(sqrt(Real(mine_nearest.squared_distance)), their.distance));
+      CHECK(near(mine_nearest.point, their.point));
+      CHECK(near(Real(mine.inf + mine_nearest.parameter), their.parameter));
+      CHECK(near(sqrt(Real(mine_nearest.squared_distance)), their.distance));
     }
   }
 }

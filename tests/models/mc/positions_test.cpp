@@ -12,20 +12,15 @@
 #include "models/mc/curve_simulation.hpp"
 #include "models/mc/positions.hpp"
 #include "models/mc/spacing.hpp"
+#include "tests/models/mc/exact_values.hpp"
 
 using namespace mc;
+using mc::testing::at;
+using mc::testing::frac;
+using mc::testing::grid;
 
 namespace {
 
-Rational frac(long n, long d = 1) {
-  return Rational(n, d);
-}
-RationalPoint at(Rational x, Rational y) {
-  return {std::move(x), std::move(y)};
-}
-GridTiling grid(int m, Neighbourhood neighbourhood = Neighbourhood::four) {
-  return GridTiling(m, neighbourhood);
-}
 Robot robot(RobotId id, Rational x, Rational y) {
   return {id, at(std::move(x), std::move(y)), std::nullopt};
 }

@@ -26,7 +26,7 @@ RoundSystem corner_system() {
   return RoundSystem(GridTiling(3, Neighbourhood::eight), {1, 1, 0, 0, 0, 0, 0, 0, 0},
                      params(1, Rational(9, 10)));
 }
-const Counts corner_start{0, 0, 0, 0, 0, 0, 0, 0, 30};
+const Counts corner_counts{0, 0, 0, 0, 0, 0, 0, 0, 30};
 
 // The count-level T_out: the first round from which no Out(t) region's count changes.
 std::size_t t_out_by_counts(const RoundSystem& system, const FixpointRun& run) {
@@ -63,7 +63,7 @@ TEST_CASE("round: In(t) and Out(t) are the regions with robots on and off the cu
   const Counts counts{0, 3, 0, 1, 0, 0, 0, 0, 5};
   CHECK(system.in_regions(counts) == std::vector<RegionId>{1});
   CHECK(system.out_regions(counts) == std::vector<RegionId>{3, 8});
-  CHECK(system.in_regions(corner_start).empty());
+  CHECK(system.in_regions(corner_counts).empty());
 }
 
 TEST_CASE("round: all_next covers every order of every lower set", "[mc][round]") {
@@ -132,7 +132,7 @@ TEST_CASE("round: every round conserves the robots", "[mc][round]") {
 TEST_CASE("round: a run to the fixed point with T_out and T_stab", "[mc][round]") {
   SECTION("robots far from the curve: T_out = 7, T_stab = 8") {
     const RoundSystem system = corner_system();
-    const FixpointRun run = system.run_to_fixpoint(corner_start);
+    const FixpointRun run = system.run_to_fixpoint(corner_counts);
     const std::vector<Counts> expected{
         {0, 0, 0, 0, 0, 0, 0, 0, 30}, {0, 0, 0, 0, 3, 3, 0, 3, 21}, {1, 3, 0, 0, 3, 3, 0, 5, 15},
         {2, 6, 0, 0, 2, 2, 0, 6, 12}, {2, 7, 0, 0, 3, 2, 0, 6, 10}, {4, 8, 0, 0, 1, 1, 0, 6, 10},
@@ -148,7 +148,7 @@ TEST_CASE("round: a run to the fixed point with T_out and T_stab", "[mc][round]"
 
     RunOptions lean;
     lean.keep_history = false;
-    const FixpointRun short_run = system.run_to_fixpoint(corner_start, lean);
+    const FixpointRun short_run = system.run_to_fixpoint(corner_counts, lean);
     CHECK(short_run.rounds == std::vector<Counts>{expected.back()});
     CHECK(short_run.flows.empty());
     CHECK(short_run.t_out == 7);
@@ -179,10 +179,10 @@ TEST_CASE("round: the round limit", "[mc][round]") {
   const RoundSystem system = corner_system();
   RunOptions options;
   options.max_rounds = 8; // the fixed point is M8: enough
-  CHECK(system.run_to_fixpoint(corner_start, options).fixpoint_round == 8);
+  CHECK(system.run_to_fixpoint(corner_counts, options).fixpoint_round == 8);
   options.max_rounds = 7;
   try {
-    (void)system.run_to_fixpoint(corner_start, options);
+    (void)system.run_to_fixpoint(corner_counts, options);
     FAIL("no RoundLimitReached");
   } catch (const RoundLimitReached& e) {
     CHECK(e.rounds == 7);

@@ -16,7 +16,8 @@ namespace {
 
 using Clauses = std::vector<std::string>;
 
-Clauses broken(const vlayer_mc::VlConfig& c, const tioa::Automaton& layer, const Words& s) {
+Clauses broken_reset_clauses(const vlayer_mc::VlConfig& c, const tioa::Automaton& layer,
+                             const Words& s) {
   Words padded = s;
   padded.push_back(0);
   return vlayer_mc::reset_mc_clauses(c, layer)(tioa::State(padded.data(), 0));
@@ -31,36 +32,37 @@ TEST_CASE("vlayer ResetMC: each clause of Definition 7.2 on hand-made states", "
   Words s(layer.words() + 1, 0);
   vlayer_mc::placed_start(layer, {l.point(1, 1)}).enumerate(s.data(), 0, [] {});
   s.resize(layer.words());
-  CHECK(broken(c, layer, s).empty()); // the start: phase 0, no update yet, nothing queued
+  CHECK(broken_reset_clauses(c, layer, s)
+            .empty()); // the start: phase 0, no update yet, nothing queued
 
   Words t = s; // (2): a robot that knows where it is needs a target and velocity 0
   set(layer, t, "CN_0.cn.x", l.point(1, 1));
   set(layer, t, "CN_0.cn.clock", 0);
   set(layer, t, "VBcast.reg[0]", 0);
-  CHECK(broken(c, layer, t) == Clauses{"(2) CN_0"});
+  CHECK(broken_reset_clauses(c, layer, t) == Clauses{"(2) CN_0"});
   // At phase 0 clause (4b) of L1MC leaves no time to move: the target is where it stands.
   set(layer, t, "CN_0.cn.target", l.point(1, 1));
   set(layer, t, "CN_0.cn.v", vlayer_mc::zero_velocity);
   set(layer, t, "RW.vel[0]", vlayer_mc::zero_velocity);
-  CHECK(broken(c, layer, t).empty());
+  CHECK(broken_reset_clauses(c, layer, t).empty());
   set(layer, t, "CN_0.delay.held", 1); // to_send_p ≠ λ
-  CHECK(broken(c, layer, t) == Clauses{"(2) CN_0"});
+  CHECK(broken_reset_clauses(c, layer, t) == Clauses{"(2) CN_0"});
 
   t = s;
   set(layer, t, "VN_1.out[0]", l.point(3, 1)); // (3): to_send_u ≠ λ
-  CHECK(broken(c, layer, t) == Clauses{"(3) VN_1"});
+  CHECK(broken_reset_clauses(c, layer, t) == Clauses{"(3) VN_1"});
   t = s;
   set(layer, t, "VBcast.vn_mask[0]", 1); // (4): a message still processing
-  CHECK(broken(c, layer, t) == Clauses{"(4)"});
+  CHECK(broken_reset_clauses(c, layer, t) == Clauses{"(4)"});
   t = s;
   set(layer, t, "RW.gps_age[0]", 0); // (5): a GPSupdate already at this time
-  CHECK(broken(c, layer, t) == Clauses{"(5)"});
+  CHECK(broken_reset_clauses(c, layer, t) == Clauses{"(5)"});
   set(layer, t, "RW.now", 1);
   set(layer, t, "RW.gps_age[0]", 1);
-  CHECK(broken(c, layer, t) == Clauses{"(5)"});
+  CHECK(broken_reset_clauses(c, layer, t) == Clauses{"(5)"});
   t = s;
   set(layer, t, "VN_0.clock", 3); // (1): via L1MC (2)
-  CHECK(broken(c, layer, t) == Clauses{"(1) (2) VN_0"});
+  CHECK(broken_reset_clauses(c, layer, t) == Clauses{"(1) (2) VN_0"});
 }
 
 // The reset states among the reachable states of the smallest instance: the start, and
