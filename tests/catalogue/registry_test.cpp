@@ -67,7 +67,9 @@ TEST_CASE("registry: every model builds with its defaults and lists its properti
   CHECK(names.count("fischer") == 1);
 }
 
-TEST_CASE("registry: every suite entry gives its expected verdict", "[models][registry][suite]") {
+// [slow]: about 4 minutes under the sanitizers (tools/run-tests.sh skips it there).
+TEST_CASE("registry: every suite entry gives its expected verdict",
+          "[models][registry][suite][slow]") {
   for (const auto& def : catalogue::builtin_models().models()) {
     CHECK_FALSE(def.suite.empty());
     for (const auto& entry : def.suite) {
