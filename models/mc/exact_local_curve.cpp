@@ -26,7 +26,7 @@ Curve exact_only(Curve curve) {
       throw std::invalid_argument(prefix + "component " + std::to_string(c) +
                                   " is a circle (centre " + to_string(circle->centre) +
                                   ", radius " + to_string(circle->radius) +
-                                  "), whose arcs have no rational " + "length");
+                                  "), whose arcs have no rational length");
     const auto& polyline = std::get<Polyline>(curve.components()[c]);
     for (std::size_t j = 0; j < segment_count(polyline); ++j) {
       const RationalPoint a = segment_begin(polyline, j), e = segment_end(polyline, j);

@@ -75,8 +75,9 @@ TEST_CASE("the suite's invariants and time-locks: the same verdicts with and wit
   CHECK(compared >= 4);
 }
 
+// [slow]: over 10 s under the sanitizers (tools/run-tests.sh skips it there).
 TEST_CASE("vlayer-mc: fewer states and the same time-lock verdict with --por",
-          "[catalogue][vlayer_mc][por]") {
+          "[catalogue][vlayer_mc][por][slow]") {
   // 1x2 with one robot: 2,706 states in full, 630 reduced; with two robots and with
   // faults (tens of thousands of states) the reduction must keep the verdict too, and
   // every state where time can pass.

@@ -102,7 +102,8 @@ TEST_CASE("vlayer-mc lmc-closure: closed window on the 1x2 grid", "[vlayer]") {
 
 // Bigger instances of the closed reading: two robots on 1×2, one robot on 2×2 (8 s of the
 // suite's time; 2×2 with 8 neighbours takes minutes: bench/).
-TEST_CASE("vlayer-mc l1mc-closure: two robots, and the 2x2 grid", "[vlayer]") {
+// [slow]: over 10 s under the sanitizers (tools/run-tests.sh skips it there).
+TEST_CASE("vlayer-mc l1mc-closure: two robots, and the 2x2 grid", "[vlayer][slow]") {
   const auto two = run("l1mc-closure", {"window=closed", "robots=2"});
   CHECK(holds_on_part(two));
   CHECK(two.states == 90'836);
