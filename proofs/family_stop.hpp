@@ -15,9 +15,9 @@
 #include <string>
 
 #include "checker/interrupt.hpp"
-#include "checker/memory_budget.hpp"
 #include "checker/options.hpp"
 #include "checker/result.hpp"
+#include "checker/run_limits.hpp"
 
 namespace proofs {
 
@@ -75,20 +75,21 @@ public:
   }
 
 private:
-  // A stop already decided, a stop requested from outside, time up or memory over.
+  // A stop already decided; else the property's (checker::property_limit_reached: a stop
+  // from outside, its deadline, its resident memory), then --max-seconds from the start of
+  // this check.
   std::optional<checker::StopReason> limit_reached() const {
     if (stopped_.load(std::memory_order_relaxed))
       return reason_.load(std::memory_order_relaxed);
-    if (checker::interrupted())
-      return checker::StopReason::interrupted;
     if (!limits_)
-      return std::nullopt;
+      return checker::interrupted() ? std::optional(checker::StopReason::interrupted)
+                                    : std::nullopt;
+    if (const std::optional<checker::StopReason> reason = checker::property_limit_reached(*limits_))
+      return reason;
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
     if (limits_->out_of_time(elapsed))
       return checker::StopReason::time_limit;
-    if (checker::resident_over_limit(*limits_))
-      return checker::StopReason::memory_limit;
     return std::nullopt;
   }
 
