@@ -30,17 +30,13 @@ bool mutual_exclusion(const Protocol& p, const State& s) {
 // release messages in flight: each names a chunk its sender has reserved (it moves on it,
 // or has moved past it).
 bool integrity(const Protocol& p, const State& s) {
+  const auto& net = *p.network;
   for (int i = 1; i <= p.n; ++i)
-    for (int j = 1; j <= p.n; ++j) {
-      if (s.is_bottom(p.release[i][j]))
-        continue;
-      const int k = s[p.release[i][j]], at = s[p.chunk[i]];
-      const auto phase = s[p.phase[i]];
-      const bool reserved = at > k || phase == path_reservation::Phase::done ||
-                            (at == k && phase == path_reservation::Phase::moving);
-      if (!reserved)
-        return false;
-    }
+    for (int j = 1; j <= p.n; ++j)
+      for (int k = 0; i != j && k < net.capacity(); ++k)
+        if (net.kind(s, i, j, k) == path_reservation::MessageKind::release &&
+            !p.has_reserved(s, i, net.read(s, i, j, k).round))
+          return false;
   return true;
 }
 
@@ -79,20 +75,26 @@ path_reservation::Scenario chosen_scenario(const ParamValues& params) {
 }
 
 Protocol path_reservation_protocol(const ParamValues& params) {
-  path_reservation::ProtocolOptions options;
+  using namespace path_reservation;
+  ProtocolOptions options;
   options.sort_by_distance = choice(params, "sort") == "distance";
-  options.variant = choice(params, "variant") == "paper"
-                        ? path_reservation::Variant::paper
-                        : path_reservation::Variant::release_before_reserve;
-  options.msg_rule = choice(params, "msg_rule") == "discover-zone"
-                         ? path_reservation::MsgRule::discover_zone
-                         : path_reservation::MsgRule::any_zone;
-  options.early_requests = choice(params, "early_requests") == "wait"
-                               ? path_reservation::EarlyRequests::wait
-                               : path_reservation::EarlyRequests::answer;
-  options.disk = choice(params, "disk") == "closed" ? path_reservation::DiskEdge::closed
-                                                    : path_reservation::DiskEdge::open;
-  return path_reservation::build_protocol(chosen_scenario(params), options);
+  const std::string variant = choice(params, "variant");
+  options.variant = variant == "paper"                    ? Variant::paper
+                    : variant == "release-before-reserve" ? Variant::release_before_reserve
+                                                          : Variant::round_tags;
+  options.msg_rule =
+      choice(params, "msg_rule") == "discover-zone" ? MsgRule::discover_zone : MsgRule::any_zone;
+  options.early_requests =
+      choice(params, "early_requests") == "wait" ? EarlyRequests::wait : EarlyRequests::answer;
+  options.disk = choice(params, "disk") == "closed" ? DiskEdge::closed : DiskEdge::open;
+  options.channels = choice(params, "channels") == "any" ? ChannelOrder::any : ChannelOrder::fifo;
+  options.capacity = static_cast<int>(params.at("capacity").integer());
+  options.reach = choice(params, "reach") == "open" ? Reach::open : Reach::closed;
+  options.delivery =
+      choice(params, "delivery") == "in-range" ? Delivery::in_range : Delivery::anywhere;
+  options.release_step =
+      choice(params, "release_step") == "own" ? ReleaseStep::own : ReleaseStep::with_discover;
+  return build_protocol(chosen_scenario(params), options);
 }
 
 ModelDefinition path_reservation_definition() {
@@ -100,16 +102,20 @@ ModelDefinition path_reservation_definition() {
   d.name = "path-reservation";
   d.description = "the path reservation protocol of seed 004 on small scenarios (time: steps)";
   ParamSpec variant = ParamSpec::choice(
-      "variant", "paper", {"paper", "release-before-reserve"},
-      "the protocol as written, or a broken one that releases before it reserves (shows the "
-      "safety checks failing)");
+      "variant", "paper", {"paper", "release-before-reserve", "round-tags"},
+      "the protocol as written; a broken one that releases before it reserves (shows the "
+      "safety checks failing); or round-tags, a repair of P1/P2: answers name the request "
+      "they answer");
   variant.variant = true;
+  ParamSpec scenario_file =
+      ParamSpec::text("scenario_file", "",
+                      "a scenario read from this file instead of `scenario` (format: "
+                      "models/path_reservation/README.md, \"Scenario files\")");
+  scenario_file.replaces = "scenario";
   d.params = {
       ParamSpec::choice("scenario", "crossing", path_reservation::scenario_names(),
                         "the robots and their paths (models/path_reservation/README.md)"),
-      ParamSpec::text("scenario_file", "",
-                      "a scenario read from this file instead of `scenario` (format: "
-                      "models/path_reservation/README.md, \"Scenario files\")"),
+      scenario_file,
       ParamSpec::choice("sort", "distance", {"distance", "id"},
                         "SortSC of the Conflict resolver: distance to the shared cells then "
                         "id, or id alone"),
@@ -122,7 +128,22 @@ ModelDefinition path_reservation_definition() {
                         "Reply thread answers it at once"),
       ParamSpec::choice("disk", "closed", {"closed", "open"},
                         "Definition 4's Cir(pos, C/2) as a closed or an open disk (finding "
-                        "P3)")};
+                        "P3)"),
+      ParamSpec::choice("channels", "any", {"any", "fifo"},
+                        "the payload channels deliver in any order (§2: \"reliable but non "
+                        "FIFO\") or in the order sent"),
+      {"capacity", path_reservation::ProtocolOptions::default_capacity, 1,
+       path_reservation::ProtocolOptions::max_capacity,
+       "messages in flight per ordered pair of robots; a send beyond it makes the check "
+       "incomplete"},
+      ParamSpec::choice("reach", "open", {"open", "closed"},
+                        "\"within C\" for Discover and delivery: closer than C (§2), or at "
+                        "most C (§3's circle)"),
+      ParamSpec::choice("delivery", "in-range", {"in-range", "anywhere"},
+                        "a payload message passes only while sender and receiver are within C "
+                        "(§2), or at any distance"),
+      ParamSpec::choice("release_step", "own", {"own", "with-discover"},
+                        "the release and the next chunk's Discover are two steps, or one")};
   d.properties = {{"mutual-exclusion", "Property 2: no point is owned by two robots"},
                   {"integrity", "Property 3: a robot releases a zone only after reserving it"},
                   {"no-collision", "no two robots ever occupy the same cell"},
@@ -136,6 +157,10 @@ ModelDefinition path_reservation_definition() {
     };
     using checker::PropertyKind;
     ModelInstance m{protocol->system, {}, ""};
+    // A send to a full channel (README, "Channels"): what follows is not explored.
+    m.beyond_bound = [protocol](const State& s) { return protocol->overflowed(s); };
+    m.bound_name = "a channel of capacity " + std::to_string(protocol->network->capacity()) +
+                   " (parameter capacity)";
     // Every robot done or halted: the protocol has nothing left to do (explore's deadlock
     // check takes it for an end, issue 17).
     m.ended = predicate(all_finished);
@@ -171,6 +196,10 @@ ModelDefinition path_reservation_definition() {
          {},
          ""},
     };
+    for (checker::Property& property : m.properties) {
+      property.beyond_bound = m.beyond_bound;
+      property.bound_name = m.bound_name;
+    }
     return m;
   };
   // Every scenario but pinwheel (1.1 million states, tests/models/path_reservation/),

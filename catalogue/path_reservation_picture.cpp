@@ -31,7 +31,7 @@ using picture::html_text;
 using picture::indexed;
 using picture::number;
 
-// One colour per robot (the scenarios have at most path_reservation::max_robots = 4).
+// One colour per robot (the scenarios have at most path_reservation::max_robots = 6).
 constexpr std::array<const char*, 6> robot_colours{"#1e88e5", "#fb8c00", "#00897b",
                                                    "#8e24aa", "#6d4c41", "#c0ca33"};
 
@@ -39,19 +39,24 @@ const char* colour(int robot) {
   return robot_colours[static_cast<std::size_t>(robot - 1) % robot_colours.size()];
 }
 
-// The messages of §2 and §5.4 as the model keeps them: variable[i][j] holds the one message
-// of that kind in flight from R_i to R_j (a chunk, or ⊥; OK is a flag).
+// The messages of §2 and §5.4 as the model keeps them (models/path_reservation/network.hpp):
+// the channel from R_i to R_j is the slots net[i][j][0], net[i][j][1], ..., the messages
+// first; a slot's `kind` names its message ("none": empty).
 struct MessageKind {
-  const char* name;
-  const char* variable;
+  const char* name; // as the state shows a slot's kind
   const char* colour;
 };
 
-constexpr std::array<MessageKind, 5> message_kinds{{{"request", "net.request", "#37474f"},
-                                                    {"AfterMe", "net.AfterMe", "#d81b60"},
-                                                    {"OK", "net.OK", "#43a047"},
-                                                    {"release", "net.release", "#e53935"},
-                                                    {"Overlap", "net.Overlap", "#3949ab"}}};
+constexpr std::array<MessageKind, 5> message_kinds{{{"request", "#37474f"},
+                                                    {"AfterMe", "#d81b60"},
+                                                    {"OK", "#43a047"},
+                                                    {"release", "#e53935"},
+                                                    {"Overlap", "#3949ab"}}};
+
+std::string slot_name(int i, int j, int k, const char* field) {
+  return "net[" + std::to_string(i) + "][" + std::to_string(j) + "][" + std::to_string(k) + "]." +
+         field;
+}
 
 std::string robot_name(int robot) {
   return "R" + std::to_string(robot);
@@ -117,6 +122,11 @@ RobotView view_of(const PathGeometry& geometry, const Json& state, int robot) {
     return view;
   const int k = static_cast<int>(*chunk);
   const Zone& zone = geometry.zone(robot, k);
+  if (view.phase == "released") { // between two chunks, on the end of chunk k
+    view.at = geometry.cells[robot - 1][k].back();
+    view.owned = zone.post;
+    return view;
+  }
   if (view.phase == "moving") {
     const auto& cells = geometry.cells[robot - 1][k];
     const auto step = number(state, indexed("step", robot));
@@ -168,22 +178,35 @@ void write_markers(std::ostream& out, const std::string& id) {
 }
 
 // One message in flight, in words, with the zone it carries.
-std::string message_text(const Json& state, const MessageKind& kind, int i, int j) {
+std::string message_text(const Json& state, const MessageKind& kind, int i, int j, int k) {
   std::string text = std::string(kind.name) + " " + robot_name(i) + " → " + robot_name(j);
   const std::string kind_name = kind.name;
-  if (kind_name == "OK")
-    return text;
-  text += " (zone of chunk " + std::to_string(*number(state, indexed(kind.variable, i, j)));
-  if (kind_name == "AfterMe" || kind_name == "Overlap") {
-    if (const auto list = set_text(state, indexed(std::string(kind.variable) + ".list", i, j)))
-      text += std::string(kind_name == "AfterMe" ? ", Overlap list " : ", list ") + *list;
-  }
-  return text + ")";
+  std::vector<std::string> parts;
+  if (kind_name != "OK")
+    if (const auto round = number(state, slot_name(i, j, k, "round")))
+      parts.push_back("zone of chunk " + std::to_string(*round));
+  if (kind_name == "AfterMe" || kind_name == "Overlap")
+    if (const auto list = set_text(state, slot_name(i, j, k, "list")))
+      parts.push_back(std::string(kind_name == "AfterMe" ? "Overlap list " : "list ") + *list);
+  if (const auto answers = number(state, slot_name(i, j, k, "answers")))
+    parts.push_back((kind_name == "request" ? "answered R" + std::to_string(j) + "'s chunk "
+                                            : "answers chunk ") +
+                    std::to_string(*answers));
+  std::string joined;
+  for (const auto& part : parts)
+    joined += (joined.empty() ? "" : ", ") + part;
+  return joined.empty() ? text : text + " (" + joined + ")";
 }
 
-bool in_flight(const Json& state, const MessageKind& kind, int i, int j) {
-  const std::string name = indexed(kind.variable, i, j);
-  return std::string(kind.name) == "OK" ? flag(state, name) : number(state, name).has_value();
+// The kind of the message in slot k of the channel from R_i to R_j; nothing when empty.
+const MessageKind* in_flight(const Json& state, int i, int j, int k) {
+  const auto name = word(state, slot_name(i, j, k, "kind"));
+  if (!name)
+    return nullptr;
+  for (const auto& kind : message_kinds)
+    if (*name == kind.name)
+      return &kind;
+  return nullptr;
 }
 
 // An arrow from one robot to another, to the right of its direction so that the two
@@ -315,15 +338,16 @@ void write_path_reservation_picture(std::ostream& out, const Json& params, const
   std::vector<std::string> messages;
   for (int i = 1; i <= robots; ++i)
     for (int j = 1; j <= robots; ++j) {
-      int slot = 0;
-      for (const auto& kind : message_kinds) {
-        if (!in_flight(state, kind, i, j))
-          continue;
-        messages.push_back(message_text(state, kind, i, j));
+      if (i == j)
+        continue;
+      for (int k = 0; const MessageKind* kind = in_flight(state, i, j, k); ++k) {
+        messages.push_back(message_text(state, *kind, i, j, k));
         if (drawn[i] && drawn[j])
-          arrow_between_robots(out, *drawn[i], *drawn[j], slot++, kind, id);
+          arrow_between_robots(out, *drawn[i], *drawn[j], k, *kind, id);
       }
     }
+  if (flag(state, "net.overflow"))
+    messages.push_back("a send found its channel full (net.overflow): the model stops here");
   // Robots, and a red frame around a cell that holds more than one.
   std::vector<std::string> collisions;
   for (const auto& [index, here] : on_cell) {

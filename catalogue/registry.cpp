@@ -139,7 +139,7 @@ ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::
       continue;
     }
     if (spec->kind == ParamKind::text) {
-      if (text.empty())
+      if (text.empty() && !spec->default_value.text().empty())
         throw UsageError("parameter " + name +
                          ": an empty value (leave the parameter out for its default)");
       values[name] = ParamValue::text(text);
@@ -169,10 +169,23 @@ ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::
       throw UsageError("parameter " + name + " = " + text + " is out of range " + spec->range());
     values[name] = value;
   }
+  for (const auto& p : model.params)
+    if (!p.replaces.empty() && given.count(p.name) && given.count(p.replaces) &&
+        values.at(p.name) != p.default_value)
+      throw UsageError("parameter " + p.name + " replaces " + p.replaces + ": give one of " +
+                       given.at(p.replaces) + " and " + given.at(p.name));
   if (model.check_params)
     if (auto why = model.check_params(values))
       throw UsageError("model '" + model.name + "': " + *why);
   return values;
+}
+
+bool shown_param(const ModelDefinition& model, const ParamSpec& spec, const ParamValues& values) {
+  for (const auto& p : model.params)
+    if (p.replaces == spec.name)
+      if (const auto it = values.find(p.name); it != values.end() && it->second != p.default_value)
+        return false;
+  return true;
 }
 
 std::vector<std::string> split_settings(const std::vector<std::string>& arguments) {

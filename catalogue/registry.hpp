@@ -41,6 +41,9 @@ struct ParamSpec {
   // found: its default is the paper's version, and a run with another value names it in
   // every report (variant_name).
   bool variant = false;
+  // The parameter this one stands in for when it is given (scenario_file for scenario):
+  // giving both is a usage error, and the reports show this one alone (shown_params).
+  std::string replaces = "";
 
   // A choice parameter; default_choice must be one of the choices.
   static ParamSpec choice(std::string name, std::string default_choice,
@@ -64,6 +67,11 @@ struct ModelInstance {
   // check counts a state with no action there as a proper end. Empty: no state is one.
   tioa::StatePredicate ended = {};
   std::string ended_name = "";
+  // The states past a bound of the model (checker::Property::beyond_bound), for the
+  // checks the command line makes (explore's deadlock check, --invariant). The model's
+  // own properties carry it themselves.
+  tioa::StatePredicate beyond_bound = {};
+  std::string bound_name = "";
 };
 
 // One entry of the default suite: an instance, a property, and the verdict we expect.
@@ -126,6 +134,9 @@ private:
 
 // Defaults overridden by "name=value" settings; every value parsed and range-checked.
 ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::string>& settings);
+// Whether a report shows `spec`: not when a parameter that replaces it has a value other
+// than its default (ParamSpec::replaces).
+bool shown_param(const ModelDefinition& model, const ParamSpec& spec, const ParamValues& values);
 
 // Which version of the algorithm `values` build: "paper" when every variant parameter has
 // its default, else the variant settings that differ from it ("cn_repair=1,vn_repair=1");

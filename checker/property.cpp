@@ -46,6 +46,76 @@ void mark_legal_set(PropertyResult& result, const Property& property) {
 
 } // namespace
 
+namespace {
+
+PropertyResult run_check(const Automaton& system, const Property& property,
+                         const StatePredicate& predicate, const ExploreOptions& named) {
+  switch (property.kind) {
+  case PropertyKind::invariant:
+    return check_invariant(system, predicate, named);
+  case PropertyKind::legal_set:
+    return check_legal_set(system, predicate, named);
+  case PropertyKind::stabilisation:
+    return check_stabilisation(system, predicate, named);
+  case PropertyKind::transitivity:
+    return check_transitivity(system, property.first, property.first_name, predicate,
+                              property.predicate_name, named);
+  case PropertyKind::deadlock:
+    return check_no_deadlock(system, named, predicate, property.predicate_name);
+  case PropertyKind::custom:
+    break;
+  }
+  return property.run(named);
+}
+
+bool ends_beyond(const PropertyResult& r, const StatePredicate& beyond) {
+  return r.trace && !r.trace->steps.empty() &&
+         beyond(tioa::State(r.trace->steps.back().state.data(), 0));
+}
+
+// A state past the bound has no step. The first run counts it as a violation (outside the
+// invariant or L, or a deadlock), so that a run that finds nothing has reached none; the
+// second counts it as fine (in the invariant or L, a proper end), so that what it finds
+// is a violation within the bound.
+PropertyResult run_within_bound(const Automaton& system, const Property& property,
+                                const ExploreOptions& named) {
+  const StatePredicate& beyond = property.beyond_bound;
+  const StatePredicate& given = property.predicate;
+  const StatePredicate strict =
+      property.kind == PropertyKind::deadlock && !given
+          ? StatePredicate{}
+          : StatePredicate([&](const tioa::State& s) { return !beyond(s) && given(s); });
+  PropertyResult first = run_check(system, property, strict, named);
+  if (first.verdict != Verdict::violated || !ends_beyond(first, beyond))
+    return first;
+  const StatePredicate lenient = [&](const tioa::State& s) {
+    return beyond(s) || (given && given(s));
+  };
+  PropertyResult second = run_check(system, property, lenient, named);
+  const std::string exceeded = property.bound_name + " is exceeded after " +
+                               std::to_string(first.trace->length()) + " steps";
+  second.seconds += first.seconds;
+  if (second.verdict == Verdict::violated) {
+    second.notes.push_back(exceeded + " on another path; this counterexample stays within it");
+    return second;
+  }
+  second.notes.push_back("the first run (" + std::to_string(first.states) + " states) found that " +
+                         exceeded + " (the trace)");
+  if (second.verdict == Verdict::holds)
+    second.message = "holds on every state reached within the bound, but " + exceeded +
+                     ": raise it to check beyond";
+  second.verdict = Verdict::incomplete;
+  // A worst time that counts the states past the bound as in L claims too little.
+  second.worst_time.reset();
+  second.last_time_outside.reset();
+  second.trace = first.trace;
+  second.trace_role = "witness";
+  second.trace_kind = "bound";
+  return second;
+}
+
+} // namespace
+
 PropertyResult run_property(const Automaton& system, const Property& property,
                             const ExploreOptions& options) {
   if (options.store == StoreKind::fingerprint && !runs_on_fingerprint_store(property))
@@ -66,28 +136,11 @@ PropertyResult run_property(const Automaton& system, const Property& property,
   }
   if (named.limits.max_memory_bytes > 0 && named.limits.resident_base == 0)
     named.limits.resident_base = resident_bytes();
-  PropertyResult result;
-  switch (property.kind) {
-  case PropertyKind::invariant:
-    result = check_invariant(system, property.predicate, named);
-    break;
-  case PropertyKind::legal_set:
-    result = check_legal_set(system, property.predicate, named);
-    break;
-  case PropertyKind::stabilisation:
-    result = check_stabilisation(system, property.predicate, named);
-    break;
-  case PropertyKind::transitivity:
-    result = check_transitivity(system, property.first, property.first_name, property.predicate,
-                                property.predicate_name, named);
-    break;
-  case PropertyKind::deadlock:
-    result = check_no_deadlock(system, named, property.predicate, property.predicate_name);
-    break;
-  case PropertyKind::custom:
-    result = property.run(named);
-    break;
-  }
+  const bool bounded = property.beyond_bound && (property.kind == PropertyKind::invariant ||
+                                                 property.kind == PropertyKind::stabilisation ||
+                                                 property.kind == PropertyKind::deadlock);
+  PropertyResult result = bounded ? run_within_bound(system, property, named)
+                                  : run_check(system, property, property.predicate, named);
   result.name = property.name;
   result.description = property.description;
   mark_legal_set(result, property);

@@ -28,6 +28,12 @@ struct Property {
   // custom: whether `run` accepts the fingerprint store (it runs check_invariant or
   // check_no_deadlock and reads nothing else of a search).
   bool fingerprint_store = false;
+  // The states past a bound of the model (a channel that a send found full): the model
+  // stops there, and such a state stands for continuations it cannot hold. Empty: none.
+  // An invariant, stabilisation or deadlock check that reaches one is incomplete, unless
+  // it finds a violation on a path that stays within the bound (run_property).
+  StatePredicate beyond_bound = {};
+  std::string bound_name = ""; // what was exceeded, in words: "a channel of capacity 4"
 };
 
 // Whether the property may run on the fingerprint store (ExploreOptions::store):
@@ -36,7 +42,10 @@ struct Property {
 bool runs_on_fingerprint_store(const Property& property);
 
 // Throws std::invalid_argument for a property that cannot run on the store `options` ask
-// for (runs_on_fingerprint_store()).
+// for (runs_on_fingerprint_store()). With a `beyond_bound`, a first run takes the states
+// past the bound as violations; only when its counterexample ends in one, a second run
+// takes them as fine, to look for a violation within the bound (else: incomplete, with the
+// path that leaves the bound as a trace of kind "bound").
 PropertyResult run_property(const Automaton& system, const Property& property,
                             const ExploreOptions& options);
 

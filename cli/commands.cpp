@@ -101,7 +101,7 @@ int command_check(const catalogue::Catalogue& models, const ModelRequest& reques
   const tioa::Automaton system = run_system(built, "start", settings.start);
   std::optional<checker::Property> invariant;
   if (!settings.invariant.empty())
-    invariant = given_invariant(system.layout(), settings.invariant);
+    invariant = given_invariant(system.layout(), settings.invariant, built.instance);
   const auto properties =
       with_given_invariant(select_properties(built.instance, request.model, request.properties),
                            invariant, request, settings);
@@ -131,7 +131,7 @@ int command_explore(const catalogue::Catalogue& models, const ModelRequest& requ
   const tioa::Automaton system = run_system(built, from, settings.start);
   std::optional<checker::Property> invariant;
   if (!settings.invariant.empty())
-    invariant = given_invariant(system.layout(), settings.invariant);
+    invariant = given_invariant(system.layout(), settings.invariant, built.instance);
   std::vector<const checker::Property*> properties;
   for (const checker::Property* p :
        select_properties(built.instance, request.model, request.properties)) {
@@ -147,6 +147,8 @@ int command_explore(const catalogue::Catalogue& models, const ModelRequest& requ
   no_deadlock.kind = checker::PropertyKind::deadlock;
   no_deadlock.predicate = built.instance.ended;
   no_deadlock.predicate_name = built.instance.ended_name;
+  no_deadlock.beyond_bound = built.instance.beyond_bound;
+  no_deadlock.bound_name = built.instance.bound_name;
   if (system.timed()) {
     no_deadlock.name = "no-timelock";
     no_deadlock.description = "no reachable state where neither an action nor a tick is possible";

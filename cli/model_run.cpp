@@ -25,7 +25,8 @@ OrderedParams ordered_params(const catalogue::ModelDefinition& model,
                              const catalogue::ParamValues& values) {
   OrderedParams out;
   for (const auto& spec : model.params)
-    if (const auto it = values.find(spec.name); it != values.end())
+    if (const auto it = values.find(spec.name);
+        it != values.end() && catalogue::shown_param(model, spec, values))
       out.emplace_back(spec.name, it->second);
   return out;
 }

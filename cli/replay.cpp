@@ -155,6 +155,13 @@ Outcome evaluate(const tioa::SuccessorGenerator& generator, const checker::Prope
   if (property->first)
     sets.emplace_back(property->first, property->first_name.empty() ? "L1" : property->first_name);
   const std::size_t last = states.size() - 1;
+  if (kind == "bound" && property->beyond_bound) {
+    out.confirmed = in(property->beyond_bound, last);
+    out.what = out.confirmed
+                   ? "the last state is past the model's bound (" + property->bound_name + ")"
+                   : "the last state is within the model's bound";
+    return out;
+  }
   const auto loop_start = trace.value("loop_start", Json(nullptr));
   for (const auto& [set, name] : sets) {
     if (kind == "invariant" && !in(set, last)) {

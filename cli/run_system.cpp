@@ -70,4 +70,12 @@ checker::Property given_invariant(const tioa::StateLayout& layout, const std::st
   return property;
 }
 
+checker::Property given_invariant(const tioa::StateLayout& layout, const std::string& text,
+                                  const catalogue::ModelInstance& instance) {
+  checker::Property property = given_invariant(layout, text);
+  property.beyond_bound = instance.beyond_bound;
+  property.bound_name = instance.bound_name;
+  return property;
+}
+
 } // namespace cli

@@ -23,6 +23,9 @@ tioa::StatePredicate start_predicate(const tioa::StateLayout& layout, const std:
 // The property `--invariant EXPR` checks, named "invariant". Throws UsageError for a bad
 // expression.
 checker::Property given_invariant(const tioa::StateLayout& layout, const std::string& text);
+// The same, with the bound of the model's states (ModelInstance::beyond_bound).
+checker::Property given_invariant(const tioa::StateLayout& layout, const std::string& text,
+                                  const catalogue::ModelInstance& instance);
 
 // The name of the property given_invariant makes.
 inline constexpr const char* given_invariant_name = "invariant";

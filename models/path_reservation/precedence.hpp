@@ -11,7 +11,7 @@
 
 namespace path_reservation {
 
-inline constexpr int max_robots = 4;
+inline constexpr int max_robots = 6;
 using RobotSet = std::uint32_t; // bit r: robot r
 
 // Depend_i of Algorithm 1 line 26: the pairs (R_x, R_y) whose zones overlap, as reported

@@ -1,6 +1,7 @@
 #include "models/path_reservation/protocol.hpp"
 
 #include <array>
+#include <functional>
 #include <memory>
 
 #include "tioa/errors.hpp"
@@ -32,18 +33,6 @@ std::string name2(const std::string& name, int i) {
   return name + "[" + std::to_string(i) + "]";
 }
 
-// Messages that carry the sender's zone (its chunk; ⊥: none in flight) and its Overlap
-// list: the pairs (sender, x), which of them are "AfterMe", and the zone of each x.
-struct ListMessages {
-  std::vector<tioa::VariableArray<int>> chunk, list, after_me; // [from][to]
-  std::vector<std::vector<tioa::VariableArray<int>>> zone;     // [from][to][x]
-};
-
-struct ReceivedList {
-  int chunk = 0, list = 0, after_me = 0;
-  std::array<int, max_robots + 1> zone{};
-};
-
 // The per-robot variables of Algorithm 1 (§5.3) and the messages in flight (§2).
 struct Vars {
   tioa::VariableArray<Phase> phase;
@@ -61,10 +50,10 @@ struct Vars {
   // Depend_i: row x holds the pairs (R_x, R_y), and which of them are "AfterMe"; the
   // chunk of each robot's zone as R_i has learnt it.
   std::vector<tioa::VariableArray<int>> depend, depend_after_me, known_zone;
-  // Messages in flight from i to j, at most one of each kind (a second is a ModelError).
-  std::vector<tioa::VariableArray<int>> req, release; // the sender's chunk
-  std::vector<tioa::VariableArray<bool>> ok;
-  ListMessages after_me_msg, overlap_msg;
+  // Round tags only: answered[i][x], the chunk of R_x's request that R_i's Reply thread
+  // answered last (⊥: none).
+  std::vector<tioa::VariableArray<int>> answered;
+  std::shared_ptr<const Network> net; // the messages in flight (§2)
 };
 
 class Builder {
@@ -80,6 +69,8 @@ private:
   void discover(tioa::Automaton& a);
   void negotiate(tioa::Automaton& a);
   void reserve_move_release(tioa::Automaton& a);
+  void receive(tioa::Automaton& a, const char* name, MessageKind kind,
+               std::function<void(tioa::State&, int from, int to, const Message&)> handle);
 
   std::shared_ptr<const Geometry> geo_;
   ProtocolOptions options_;
@@ -90,19 +81,27 @@ private:
 // ---- what the transitions share (all robots 1-based)
 
 // Zone_{.,r} as other robots see it (§5.3): the requested or reserved zone; the cell a
-// robot waits on before it starts (README, "Robots that have not started"); the Post zone
-// it keeps once its path is done (Definition 5).
+// robot waits on before it starts or between two chunks (README, "Robots that have not
+// started"); the Post zone it keeps once its path is done (Definition 5).
 CellSet current_zone(const Geometry& g, const Vars& v, const State& s, int r) {
   const Phase p = s[v.phase[r]];
   if (p == Phase::idle)
     return g.zone(r, 0).pre;
   if (p == Phase::done)
     return g.zone(r, g.last_chunk(r)).post;
+  if (p == Phase::released)
+    return g.zone(r, s[v.chunk[r]]).post;
   return g.zone(r, s[v.chunk[r]]).all();
 }
 
+// Whether r asks for or holds a zone, which a Discover reply names (README, "Which message
+// is msg_j"); not before its first chunk, between two chunks, or once done.
+bool names_a_zone(Phase p) {
+  return p != Phase::idle && p != Phase::released && p != Phase::done;
+}
+
 // Where robot r stands: the start of its chunk until it reserves, the cell reached while
-// it moves, the end of its path when done.
+// it moves, the end of the chunk once it has released it, the end of its path when done.
 Cell position_of(const Geometry& g, const tioa::VariableArray<Phase>& phase,
                  const tioa::VariableArray<int>& chunk, const tioa::VariableArray<int>& step,
                  const State& s, int r) {
@@ -111,6 +110,8 @@ Cell position_of(const Geometry& g, const tioa::VariableArray<Phase>& phase,
     return g.end(r);
   if (p == Phase::moving)
     return g.cells[r - 1][s[chunk[r]]][s[step[r]]];
+  if (p == Phase::released)
+    return g.cells[r - 1][s[chunk[r]]].back();
   return g.start(r, p == Phase::idle ? 0 : s[chunk[r]]);
 }
 
@@ -118,29 +119,54 @@ Cell position_of(const Geometry& g, const Vars& v, const State& s, int r) {
   return position_of(g, v.phase, v.chunk, v.step, s, r);
 }
 
-[[noreturn]] void throw_second_message(const char* kind, int from, int to) {
-  throw tioa::ModelError(std::string("path-reservation: a second ") + kind + " message from R" +
-                         std::to_string(from) + " to R" + std::to_string(to) +
-                         " while the first is in flight (the model holds one of each kind per "
-                         "pair)");
+// "Within C" as options.reach reads it (§2, §3).
+bool within_range(const Geometry& g, const ProtocolOptions& options, Cell a, Cell b) {
+  const int d = squared_distance(a, b);
+  return options.reach == Reach::open ? d < g.range_squared() : d <= g.range_squared();
 }
 
-void send(State& s, const tioa::Variable<int>& slot, int content, const char* kind, int from,
-          int to) {
-  if (!s.is_bottom(slot))
-    throw_second_message(kind, from, to);
-  s[slot] = content;
+// §2: a message passes from R_i to R_j while they are within C (Delivery::in_range).
+bool in_touch(const Geometry& g, const Vars& v, const ProtocolOptions& options, const State& s,
+              int i, int j) {
+  return options.delivery == Delivery::anywhere ||
+         within_range(g, options, position_of(g, v, s, i), position_of(g, v, s, j));
 }
 
-// §3: Discover_i pings every robot closer than C (the control channel reaches them all).
-void start_discover(const Geometry& g, const Vars& v, State& s, int i) {
+// The kinds of message a robot in phase `at` reads now. A robot reads requests once it
+// knows G_i (README, "Requests before G_i"), and Overlap lists once it knows its own
+// Overlap_i; until then they wait in the network.
+KindMask reads(const ProtocolOptions& options, Phase at) {
+  const bool before_group = at == Phase::idle || at == Phase::discovering || at == Phase::released;
+  KindMask mask =
+      kind_bit(MessageKind::after_me) | kind_bit(MessageKind::ok) | kind_bit(MessageKind::release);
+  if (!before_group || options.early_requests == EarlyRequests::answer)
+    mask |= kind_bit(MessageKind::request);
+  if (at != Phase::discovering && at != Phase::negotiating && at != Phase::released)
+    mask |= kind_bit(MessageKind::overlap);
+  return mask;
+}
+
+// §3: Discover_i pings every robot within C (the control channel reaches them all).
+void start_discover(const Geometry& g, const Vars& v, const ProtocolOptions& options, State& s,
+                    int i) {
   const Cell at = position_of(g, v, s, i);
   int in_range = 0;
   for (int j = 1; j <= static_cast<int>(g.scenario.paths.size()); ++j)
-    if (j != i && squared_distance(at, position_of(g, v, s, j)) < g.range_squared())
+    if (j != i && within_range(g, options, at, position_of(g, v, s, j)))
       in_range |= bit(j);
   s[v.phase[i]] = Phase::discovering;
   s[v.pings[i]] = in_range;
+}
+
+// Algorithm 1 line 1 after lines 35-37: the next chunk's Discover, or the end of the path.
+void next_chunk(const Geometry& g, const Vars& v, const ProtocolOptions& options, State& s, int i) {
+  const int k = s[v.chunk[i]];
+  if (k == g.last_chunk(i)) {
+    s[v.phase[i]] = Phase::done;
+    return;
+  }
+  s[v.chunk[i]] = k + 1;
+  start_discover(g, v, options, s, i);
 }
 
 // Clears what belongs to one chunk's negotiation (Algorithm 1 lines 2-3).
@@ -160,47 +186,39 @@ void clear_negotiation(const Vars& v, State& s, int i, int n) {
   }
 }
 
-// Sends Zone_i and Overlap_i, with the zone of every robot on the list.
-void send_list(const Vars& v, const ListMessages& m, State& s, int i, int j, const char* kind,
-               int n) {
-  send(s, m.chunk[i][j], s[v.chunk[i]], kind, i, j);
-  s[m.list[i][j]] = s[v.overlap[i]];
-  s[m.after_me[i][j]] = s[v.after_me[i]];
+// Zone_i and Overlap_i, with the zone of every robot on the list (an AfterMe answer or an
+// Overlap message); `answers`: the round of the request answered (round tags).
+Message list_message(const Vars& v, const State& s, int i, MessageKind kind, int answers, int n) {
+  Message m;
+  m.kind = kind;
+  m.round = s[v.chunk[i]];
+  m.answers = answers;
+  m.list = s[v.overlap[i]];
+  m.after_me = s[v.after_me[i]];
   for (int x = 1; x <= n; ++x)
-    if (has(s[v.overlap[i]], x))
-      s[m.zone[i][j][x]] = static_cast<int>(s[v.known_zone[i][x]]);
-}
-
-ReceivedList take_list(const ListMessages& m, State& s, int j, int i, int n) {
-  ReceivedList r;
-  r.chunk = s[m.chunk[j][i]];
-  r.list = s[m.list[j][i]];
-  r.after_me = s[m.after_me[j][i]];
-  s.set_bottom(m.chunk[j][i]);
-  s[m.list[j][i]] = 0;
-  s[m.after_me[j][i]] = 0;
-  for (int x = 1; x <= n; ++x)
-    if (has(r.list, x)) {
-      r.zone[x] = s[m.zone[j][i][x]];
-      s.set_bottom(m.zone[j][i][x]);
-    }
-  return r;
+    if (has(m.list, x) && !s.is_bottom(v.known_zone[i][x]))
+      m.zone[static_cast<std::size_t>(x)] = s[v.known_zone[i][x]];
+  return m;
 }
 
 // Algorithm 1 line 26: Depend_i gains R_j's pairs, and R_i learns the zones on its list.
-void accept_list(const Vars& v, State& s, int i, int j, const ReceivedList& r, int n) {
+void accept_list(const Vars& v, State& s, int i, int j, const Message& m, int n) {
   s[v.exchanged[i]] = s[v.exchanged[i]] | bit(j);
-  s[v.depend[i][j]] = r.list;
-  s[v.depend_after_me[i][j]] = r.after_me;
+  s[v.depend[i][j]] = m.list;
+  s[v.depend_after_me[i][j]] = m.after_me;
   for (int x = 1; x <= n; ++x)
-    if (x != i && has(r.list, x) && s.is_bottom(v.known_zone[i][x]))
-      s[v.known_zone[i][x]] = r.zone[x];
+    if (x != i && has(m.list, x) && s.is_bottom(v.known_zone[i][x]) &&
+        m.zone[static_cast<std::size_t>(x)] >= 0)
+      s[v.known_zone[i][x]] = m.zone[static_cast<std::size_t>(x)];
 }
 
 void send_releases(const Vars& v, State& s, int i, int n) {
+  Message release;
+  release.kind = MessageKind::release;
+  release.round = s[v.chunk[i]];
   for (int j = 1; j <= n; ++j)
     if (has(s[v.succs[i]], j))
-      send(s, v.release[i][j], s[v.chunk[i]], "release", i, j);
+      v.net->send(s, i, j, release);
 }
 
 // Algorithms 2-4 on Depend_i (Algorithm 1 lines 27-30), with the zones R_i has learnt.
@@ -277,7 +295,7 @@ void finish_negotiation(const Geometry& g, const Vars& v, const ProtocolOptions&
   // The "AfterMe" senders gave their lists with their answer (README, "Overlap lists").
   for (int j = 1; j <= n; ++j)
     if (has(s[v.overlap[i]], j) && !has(s[v.exchanged[i]], j))
-      send_list(v, v.overlap_msg, s, i, j, "Overlap", n);
+      v.net->send(s, i, j, list_message(v, s, i, MessageKind::overlap, -1, n));
   if (s[v.exchanged[i]] == s[v.overlap[i]])
     build_graphs(g, v, options, s, i, n);
 }
@@ -291,10 +309,10 @@ void Builder::declare(tioa::Automaton& a) {
   for (const auto& per_robot : geo_->cells)
     for (const auto& cells : per_robot)
       longest = std::max(longest, static_cast<int>(cells.size()) - 1);
-  v_.phase = a.enumerations<Phase>(
-      "phase", robots,
-      {"idle", "discovering", "negotiating", "exchanging", "waiting", "moving", "done", "halted"},
-      Phase::idle);
+  v_.phase = a.enumerations<Phase>("phase", robots,
+                                   {"idle", "discovering", "negotiating", "exchanging", "waiting",
+                                    "moving", "released", "done", "halted"},
+                                   Phase::idle);
   v_.chunk = a.integers("chunk", robots, 0, max_chunks - 1, 0);
   v_.step = a.integers("step", robots, 0, longest, 0);
   v_.pings = a.subsets("pings", robots, names, 0);
@@ -309,7 +327,7 @@ void Builder::declare(tioa::Automaton& a) {
   v_.exception = a.enumerations<Exception>(
       "exception", robots,
       {"none", "deadlock1", "deadlock2", "deadlock3", "deadlock4", "risk-cycle"}, Exception::none);
-  // Index 0 is unused in the per-pair arrays so that v.req[i][j] reads as the paper.
+  // Index 0 is unused in the per-pair arrays so that v.depend[i][x] reads as the paper.
   const auto per_robot = [&](auto declare_one) {
     std::vector<decltype(declare_one(1))> out(1);
     for (int i = 1; i <= n_; ++i)
@@ -327,39 +345,16 @@ void Builder::declare(tioa::Automaton& a) {
       out.items.push_back(a.optional_integer(name2(name2("zone", i), x), 0, max_chunks - 1));
     return out;
   });
-  const auto channel = [&](const std::string& kind) {
-    return per_robot([&](int i) {
-      tioa::VariableArray<int> out;
-      out.first = 1;
-      for (int j = 1; j <= n_; ++j)
-        out.items.push_back(a.optional_integer(name2(name2(kind, i), j), 0, max_chunks - 1));
-      return out;
-    });
-  };
-  v_.req = channel("net.request");
-  v_.ok = per_robot([&](int i) { return a.booleans(name2("net.OK", i), robots, false); });
-  v_.release = channel("net.release");
-  const auto list_messages = [&](const std::string& kind) {
-    ListMessages m;
-    m.chunk = channel(kind);
-    m.list =
-        per_robot([&](int i) { return a.subsets(name2(kind + ".list", i), robots, names, 0); });
-    m.after_me =
-        per_robot([&](int i) { return a.subsets(name2(kind + ".AfterMe", i), robots, names, 0); });
-    m.zone.resize(static_cast<std::size_t>(n_) + 1);
-    for (int i = 1; i <= n_; ++i) {
-      m.zone[i].resize(static_cast<std::size_t>(n_) + 1);
-      for (int j = 1; j <= n_; ++j) {
-        m.zone[i][j].first = 1;
-        for (int x = 1; x <= n_; ++x)
-          m.zone[i][j].items.push_back(
-              a.optional_integer(name2(name2(name2(kind + ".zone", i), j), x), 0, max_chunks - 1));
-      }
-    }
-    return m;
-  };
-  v_.after_me_msg = list_messages("net.AfterMe");
-  v_.overlap_msg = list_messages("net.Overlap");
+  const bool tags = options_.variant == Variant::round_tags;
+  v_.answered = per_robot([&](int i) {
+    tioa::VariableArray<int> out;
+    out.first = 1;
+    for (int x = 1; tags && x <= n_; ++x)
+      out.items.push_back(a.optional_integer(name2(name2("answered", i), x), 0, max_chunks - 1));
+    return out;
+  });
+  v_.net = std::make_shared<const Network>(a, n_, options_.capacity, options_.channels,
+                                           options_.variant == Variant::round_tags);
 }
 
 void Builder::discover(tioa::Automaton& a) {
@@ -371,15 +366,18 @@ void Builder::discover(tioa::Automaton& a) {
   // A robot joins: it asks for its first chunk (every order of joining is explored, so
   // late joiners race the negotiations of the others).
   a.internal("start", {robot_i})
-      .pre([=](const State& s, const Params& p) { return s[v.phase[p[0]]] == Phase::idle; })
-      .eff([=](State& s, const Params& p) { start_discover(*geo, v, s, p[0]); });
+      .pre([=](const State& s, const Params& p) {
+        return !v.net->overflowed(s) && s[v.phase[p[0]]] == Phase::idle;
+      })
+      .eff([=](State& s, const Params& p) { start_discover(*geo, v, options, s, p[0]); });
   // §3, Property 1: Discover_i reaches R_j, which replies on the control channel with
   // whether its zone meets Cir_i(pos_i, C/2) (§5.3, G_i). The reply's content is fixed
   // here; Discover_i ends only when every reply is in (discover_end), which is what
   // waiting Δ gives when every reply arrives within Δ (README, "Discover").
   a.internal("discover_reply", {robot_i, robot_j})
       .pre([=](const State& s, const Params& p) {
-        return s[v.phase[p[0]]] == Phase::discovering && has(s[v.pings[p[0]]], p[1]);
+        return !v.net->overflowed(s) && s[v.phase[p[0]]] == Phase::discovering &&
+               has(s[v.pings[p[0]]], p[1]);
       })
       .eff([=](State& s, const Params& p) {
         const int i = p[0], j = p[1];
@@ -389,22 +387,54 @@ void Builder::discover(tioa::Automaton& a) {
           return;
         s[v.group[i]] = s[v.group[i]] | bit(j);
         // The reply names the zone it is about (README, "Which message is msg_j").
-        if (s[v.phase[j]] != Phase::idle && s[v.phase[j]] != Phase::done)
+        if (names_a_zone(s[v.phase[j]]))
           s[v.known_zone[i][j]] = s[v.chunk[j]];
       });
   // Algorithm 1 lines 1 and 11: G_i is determined; request(Zone_i) to every member.
   a.internal("discover_end", {robot_i})
       .pre([=](const State& s, const Params& p) {
-        return s[v.phase[p[0]]] == Phase::discovering && s[v.pings[p[0]]] == 0;
+        return !v.net->overflowed(s) && s[v.phase[p[0]]] == Phase::discovering &&
+               s[v.pings[p[0]]] == 0;
       })
       .eff([=](State& s, const Params& p) {
         const int i = p[0];
         s[v.phase[i]] = Phase::negotiating;
+        Message request;
+        request.kind = MessageKind::request;
+        request.round = s[v.chunk[i]];
+        const bool tags = options.variant == Variant::round_tags;
         for (int j = 1; j <= n; ++j)
-          if (has(s[v.group[i]], j))
-            send(s, v.req[i][j], s[v.chunk[i]], "request", i, j);
+          if (has(s[v.group[i]], j)) {
+            request.answers =
+                tags && !s.is_bottom(v.answered[i][j]) ? static_cast<int>(s[v.answered[i][j]]) : -1;
+            v.net->send(s, i, j, request);
+          }
         if (s[v.group[i]] == 0)
           finish_negotiation(*geo, v, options, s, i, n);
+      });
+}
+
+// One receive action per kind of message, from -> to: enabled when the channel holds a
+// message of that kind that `to` reads now (network.hpp); each such message is a choice.
+void Builder::receive(tioa::Automaton& a, const char* name, MessageKind kind,
+                      std::function<void(State&, int from, int to, const Message&)> handle) {
+  const auto geo = geo_;
+  const Vars v = v_;
+  const ProtocolOptions options = options_;
+  const tioa::ParamRange from{"from", 1, n_}, to{"to", 1, n_};
+  const auto count = [=](const State& s, const Params& p) -> std::uint32_t {
+    const int j = p[0], i = p[1];
+    if (i == j || v.net->overflowed(s) || !in_touch(*geo, v, options, s, j, i))
+      return 0;
+    return v.net->deliverable(s, j, i, kind, reads(options, s[v.phase[i]]));
+  };
+  a.internal(name, {from, to})
+      .pre([=](const State& s, const Params& p) { return count(s, p) > 0; })
+      .choose(count, [=](State& s, const Params& p, std::uint32_t choice) {
+        const int j = p[0], i = p[1];
+        const int slot =
+            v.net->deliverable_slot(s, j, i, kind, reads(options, s[v.phase[i]]), choice);
+        handle(s, j, i, v.net->take(s, j, i, slot));
       });
 }
 
@@ -413,7 +443,7 @@ void Builder::negotiate(tioa::Automaton& a) {
   const Vars v = v_;
   const int n = n_;
   const ProtocolOptions options = options_;
-  const tioa::ParamRange from{"from", 1, n}, to{"to", 1, n};
+  const bool tags = options.variant == Variant::round_tags;
   // msg_j of Algorithm 1 line 12 from a member of G_i; once all are in, lines 21-24.
   const auto heard_from = [=](State& s, int i, int j) {
     s[v.heard[i]] = s[v.heard[i]] | bit(j);
@@ -425,98 +455,87 @@ void Builder::negotiate(tioa::Automaton& a) {
   };
   // A request is msg_j only for the zone R_j named when it replied to Discover_i (or any
   // zone when R_j had none yet); a request for a later zone goes to the Reply thread.
-  // With MsgRule::any_zone, every request from an awaited R_j is msg_j.
-  const auto request_is_msg = [=](const State& s, int i, int j, int zone_chunk) {
-    return expecting(s, i, j) &&
-           (options.msg_rule == MsgRule::any_zone || s.is_bottom(v.known_zone[i][j]) ||
-            s[v.known_zone[i][j]] == zone_chunk);
+  // With MsgRule::any_zone, every request from an awaited R_j is msg_j. With round tags
+  // (msg_rule aside), every request from an awaited R_j is msg_j unless it says that R_j
+  // has answered R_i's request of this round: then that answer is msg_j (README, "The
+  // repair: round tags").
+  const auto request_is_msg = [=](const State& s, int i, int j, const Message& m) {
+    if (!expecting(s, i, j))
+      return false;
+    if (tags)
+      return m.answers != s[v.chunk[i]];
+    return options.msg_rule == MsgRule::any_zone || s.is_bottom(v.known_zone[i][j]) ||
+           s[v.known_zone[i][j]] == m.round;
+  };
+  // An answer counts for the round it answers (round tags), or for whatever R_i waits for.
+  const auto answers_now = [=](const State& s, int i, const Message& m) {
+    return !tags || m.answers == s[v.chunk[i]];
   };
   // request(Zone_j) reaches R_i. From a member of G_i whose msg is due, it is that msg
   // (the G2 case: lines 18-19). Otherwise the Reply thread answers (lines 5-10): "AfterMe"
   // when the zones overlap, "OK" when not (README, "AfterMe or OK"). A robot reads
-  // requests once it knows G_i: one that arrives earlier waits in the network (README,
-  // "Requests before G_i"), unless EarlyRequests::answer lets the Reply thread answer it.
-  a.internal("receive_request", {from, to})
-      .pre([=](const State& s, const Params& p) {
-        const Phase at = s[v.phase[p[1]]];
-        return !s.is_bottom(v.req[p[0]][p[1]]) &&
-               (options.early_requests == EarlyRequests::answer ||
-                (at != Phase::idle && at != Phase::discovering));
-      })
-      .eff([=](State& s, const Params& p) {
-        const int j = p[0], i = p[1];
-        const int zone_chunk = s[v.req[j][i]];
-        s.set_bottom(v.req[j][i]);
-        const CellSet zone_j = geo->zone(j, zone_chunk).all();
-        if (request_is_msg(s, i, j, zone_chunk)) {
-          s[v.known_zone[i][j]] = zone_chunk;
-          if ((zone_j & geo->zone(i, s[v.chunk[i]]).all()) != 0)
-            s[v.overlap[i]] = s[v.overlap[i]] | bit(j);
-          heard_from(s, i, j);
-        } else if ((zone_j & current_zone(*geo, v, s, i)) != 0) {
-          send_list(v, v.after_me_msg, s, i, j, "AfterMe", n);
-          s[v.succs[i]] = s[v.succs[i]] | bit(j);
-        } else {
-          if (s[v.ok[i][j]])
-            throw_second_message("OK", i, j);
-          s[v.ok[i][j]] = true;
-        }
-      });
+  // requests once it knows G_i (README, "Requests before G_i"), unless
+  // EarlyRequests::answer lets the Reply thread answer them at once (reads()).
+  receive(a, "receive_request", MessageKind::request,
+          [=](State& s, int j, int i, const Message& m) {
+            const int zone_chunk = m.round;
+            const CellSet zone_j = geo->zone(j, zone_chunk).all();
+            if (request_is_msg(s, i, j, m)) {
+              s[v.known_zone[i][j]] = zone_chunk;
+              if ((zone_j & geo->zone(i, s[v.chunk[i]]).all()) != 0)
+                s[v.overlap[i]] = s[v.overlap[i]] | bit(j);
+              heard_from(s, i, j);
+              return;
+            }
+            const int answers = tags ? zone_chunk : -1;
+            if (tags)
+              s[v.answered[i][j]] = zone_chunk;
+            if ((zone_j & current_zone(*geo, v, s, i)) != 0) {
+              v.net->send(s, i, j, list_message(v, s, i, MessageKind::after_me, answers, n));
+              s[v.succs[i]] = s[v.succs[i]] | bit(j);
+              return;
+            }
+            Message ok;
+            ok.kind = MessageKind::ok;
+            ok.answers = answers;
+            v.net->send(s, i, j, ok);
+          });
   // "AfterMe" + Zone_j from a member of G1_i (lines 13-16), with Overlap_j; "OK" (§5.4).
   // An answer R_i no longer waits for is dropped (README, "Late answers").
-  a.internal("receive_AfterMe", {from, to})
-      .pre([=](const State& s, const Params& p) {
-        return !s.is_bottom(v.after_me_msg.chunk[p[0]][p[1]]);
-      })
-      .eff([=](State& s, const Params& p) {
-        const int j = p[0], i = p[1];
-        const ReceivedList answer = take_list(v.after_me_msg, s, j, i, n);
-        if (!expecting(s, i, j))
-          return;
-        s[v.known_zone[i][j]] = answer.chunk;
-        s[v.overlap[i]] = s[v.overlap[i]] | bit(j);
-        s[v.after_me[i]] = s[v.after_me[i]] | bit(j);
-        s[v.preds[i]] = s[v.preds[i]] | bit(j);
-        accept_list(v, s, i, j, answer, n);
-        heard_from(s, i, j);
-      });
-  a.internal("receive_OK", {from, to})
-      .pre([=](const State& s, const Params& p) { return s[v.ok[p[0]][p[1]]]; })
-      .eff([=](State& s, const Params& p) {
-        const int j = p[0], i = p[1];
-        s[v.ok[j][i]] = false;
-        if (expecting(s, i, j))
-          heard_from(s, i, j);
-      });
+  receive(a, "receive_AfterMe", MessageKind::after_me,
+          [=](State& s, int j, int i, const Message& m) {
+            if (!expecting(s, i, j) || !answers_now(s, i, m))
+              return;
+            s[v.known_zone[i][j]] = m.round;
+            s[v.overlap[i]] = s[v.overlap[i]] | bit(j);
+            s[v.after_me[i]] = s[v.after_me[i]] | bit(j);
+            s[v.preds[i]] = s[v.preds[i]] | bit(j);
+            accept_list(v, s, i, j, m, n);
+            heard_from(s, i, j);
+          });
+  receive(a, "receive_OK", MessageKind::ok, [=](State& s, int j, int i, const Message& m) {
+    if (expecting(s, i, j) && answers_now(s, i, m))
+      heard_from(s, i, j);
+  });
   // Overlap_j reaches R_i (lines 25-26); with every list in, Algorithms 2-4 (lines 27-30).
-  // R_i reads it once it knows its own Overlap_i; a list it does not wait for, or one for
-  // another zone of R_j than the one R_j requested, is dropped (README, "Overlap lists").
-  a.internal("receive_Overlap", {from, to})
-      .pre([=](const State& s, const Params& p) {
-        const Phase at = s[v.phase[p[1]]];
-        return !s.is_bottom(v.overlap_msg.chunk[p[0]][p[1]]) && at != Phase::discovering &&
-               at != Phase::negotiating;
-      })
-      .eff([=](State& s, const Params& p) {
-        const int j = p[0], i = p[1];
-        const ReceivedList list = take_list(v.overlap_msg, s, j, i, n);
-        const bool awaited = s[v.phase[i]] == Phase::exchanging && has(s[v.overlap[i]], j) &&
-                             !has(s[v.exchanged[i]], j) && !s.is_bottom(v.known_zone[i][j]) &&
-                             s[v.known_zone[i][j]] == list.chunk;
-        if (!awaited)
-          return;
-        accept_list(v, s, i, j, list, n);
-        if (s[v.exchanged[i]] == s[v.overlap[i]])
-          build_graphs(*geo, v, options, s, i, n);
-      });
+  // R_i reads it once it knows its own Overlap_i (reads()); a list it does not wait for, or
+  // one for another zone of R_j than the one R_j requested, is dropped (README, "Overlap
+  // lists").
+  receive(a, "receive_Overlap", MessageKind::overlap,
+          [=](State& s, int j, int i, const Message& m) {
+            const bool awaited = s[v.phase[i]] == Phase::exchanging && has(s[v.overlap[i]], j) &&
+                                 !has(s[v.exchanged[i]], j) && !s.is_bottom(v.known_zone[i][j]) &&
+                                 s[v.known_zone[i][j]] == m.round;
+            if (!awaited)
+              return;
+            accept_list(v, s, i, j, m, n);
+            if (s[v.exchanged[i]] == s[v.overlap[i]])
+              build_graphs(*geo, v, options, s, i, n);
+          });
   // Algorithm 1 line 31: a release message from a predecessor.
-  a.internal("receive_release", {from, to})
-      .pre([=](const State& s, const Params& p) { return !s.is_bottom(v.release[p[0]][p[1]]); })
-      .eff([=](State& s, const Params& p) {
-        const int j = p[0], i = p[1];
-        s.set_bottom(v.release[j][i]);
-        s[v.released[i]] = s[v.released[i]] | bit(j);
-      });
+  receive(a, "receive_release", MessageKind::release, [=](State& s, int j, int i, const Message&) {
+    s[v.released[i]] = s[v.released[i]] | bit(j);
+  });
 }
 
 void Builder::reserve_move_release(tioa::Automaton& a) {
@@ -529,32 +548,39 @@ void Builder::reserve_move_release(tioa::Automaton& a) {
   a.internal("reserve", {robot_i})
       .pre([=](const State& s, const Params& p) {
         const int i = p[0];
-        return s[v.phase[i]] == Phase::waiting && (s[v.preds[i]] & ~s[v.released[i]]) == 0;
+        return !v.net->overflowed(s) && s[v.phase[i]] == Phase::waiting &&
+               (s[v.preds[i]] & ~s[v.released[i]]) == 0;
       })
       .eff([=](State& s, const Params& p) {
         s[v.phase[p[0]]] = Phase::moving;
         s[v.step[p[0]]] = 0;
       });
   // Line 34: one cell further along the chunk. On its last cell the robot releases
-  // (lines 35-37; it keeps Post(Zone), Definition 5) and starts the next chunk's Discover.
+  // (lines 35-37; it keeps Post(Zone), Definition 5).
   a.internal("move", {robot_i})
-      .pre([=](const State& s, const Params& p) { return s[v.phase[p[0]]] == Phase::moving; })
+      .pre([=](const State& s, const Params& p) {
+        return !v.net->overflowed(s) && s[v.phase[p[0]]] == Phase::moving;
+      })
       .eff([=](State& s, const Params& p) {
         const int i = p[0], k = s[v.chunk[i]];
         s[v.step[i]] = s[v.step[i]] + 1;
         if (s[v.step[i]] + 1 < static_cast<int>(geo->cells[i - 1][k].size()))
           return;
-        if (options.variant == Variant::paper)
+        if (options.variant != Variant::release_before_reserve)
           send_releases(v, s, i, n);
         clear_negotiation(v, s, i, n);
         s[v.step[i]] = 0;
-        if (k == geo->last_chunk(i)) {
-          s[v.phase[i]] = Phase::done;
-          return;
-        }
-        s[v.chunk[i]] = k + 1;
-        start_discover(*geo, v, s, i);
+        s[v.phase[i]] = Phase::released;
+        if (options.release_step == ReleaseStep::with_discover)
+          next_chunk(*geo, v, options, s, i);
       });
+  // Line 1 again: the next chunk's Discover, or the end of the path (README, "Release and
+  // the next Discover").
+  a.internal("next_chunk", {robot_i})
+      .pre([=](const State& s, const Params& p) {
+        return !v.net->overflowed(s) && s[v.phase[p[0]]] == Phase::released;
+      })
+      .eff([=](State& s, const Params& p) { next_chunk(*geo, v, options, s, p[0]); });
 }
 
 Protocol Builder::build() {
@@ -568,7 +594,7 @@ Protocol Builder::build() {
   out.phase = v_.phase;
   out.chunk = v_.chunk;
   out.step = v_.step;
-  out.release = v_.release;
+  out.network = v_.net;
   return out;
 }
 
@@ -583,6 +609,8 @@ CellSet Protocol::owned(const State& s, int robot) const {
   const int k = s[chunk[robot]];
   if (p == Phase::moving)
     return geometry->zone(robot, k).all();
+  if (p == Phase::released)
+    return geometry->zone(robot, k).post;
   // Not moving: the cell it waits on, the Post zone of the previous chunk (this chunk's
   // Pre); before its first chunk, its start cell (README, "Robots that have not started").
   return geometry->zone(robot, p == Phase::idle ? 0 : k).pre;
@@ -593,9 +621,18 @@ bool Protocol::finished(const State& s, int robot) const {
   return p == Phase::done || p == Phase::halted;
 }
 
+bool Protocol::has_reserved(const State& s, int robot, int k) const {
+  const Phase p = s[phase[robot]];
+  const int at = s[chunk[robot]];
+  return at > k || p == Phase::done || (at == k && (p == Phase::moving || p == Phase::released));
+}
+
 Protocol build_protocol(const Scenario& scenario, const ProtocolOptions& options) {
   if (auto why = check_scenario(scenario, options.disk))
     throw tioa::ModelError("scenario '" + scenario.name + "': " + *why);
+  if (options.capacity < 1 || options.capacity > ProtocolOptions::max_capacity)
+    throw tioa::ModelError("channel capacity " + std::to_string(options.capacity) +
+                           " is not in 1.." + std::to_string(ProtocolOptions::max_capacity));
   return Builder(scenario, options).build();
 }
 

@@ -62,8 +62,8 @@ TEST_CASE("path-reservation: P1 and P2 survive taking any request of R_j as msg_
   const auto head_on = run("head-on", "progress", any);
   REQUIRE(head_on.verdict == Verdict::violated);
   REQUIRE(head_on.trace);
-  CHECK(head_on.trace->steps.size() == 16);
-  CHECK(head_on.states == 166);
+  CHECK(head_on.trace->length() == 16);
+  CHECK(head_on.states == 200);
   CHECK(run("late-joiner", "progress", any).verdict == Verdict::violated);
 }
 

@@ -1,0 +1,185 @@
+#include "models/path_reservation/network.hpp"
+
+#include <tuple>
+
+#include "models/path_reservation/scenario.hpp"
+
+namespace path_reservation {
+
+using tioa::State;
+
+const char* message_name(MessageKind kind) {
+  switch (kind) {
+  case MessageKind::none:
+    return "none";
+  case MessageKind::request:
+    return "request";
+  case MessageKind::after_me:
+    return "AfterMe";
+  case MessageKind::ok:
+    return "OK";
+  case MessageKind::overlap:
+    return "Overlap";
+  case MessageKind::release:
+    return "release";
+  }
+  return "?";
+}
+
+namespace {
+
+std::string slot_name(int from, int to, int slot) {
+  return "net[" + std::to_string(from) + "][" + std::to_string(to) + "][" + std::to_string(slot) +
+         "]";
+}
+
+// The order of a multiset channel: empty slots last.
+bool before(const Message& a, const Message& b) {
+  if (a.kind == MessageKind::none || b.kind == MessageKind::none)
+    return b.kind == MessageKind::none && a.kind != MessageKind::none;
+  return std::tie(a.kind, a.round, a.answers, a.list, a.after_me, a.zone) <
+         std::tie(b.kind, b.round, b.answers, b.list, b.after_me, b.zone);
+}
+
+} // namespace
+
+Network::Network(tioa::Automaton& a, int robots, int capacity, ChannelOrder order, bool round_tags)
+    : robots_(robots), capacity_(capacity), order_(order) {
+  std::vector<std::string> names;
+  for (int r = 1; r <= robots; ++r)
+    names.push_back("R" + std::to_string(r));
+  const int last_chunk = max_chunks - 1;
+  for (int from = 1; from <= robots; ++from)
+    for (int to = 1; to <= robots; ++to)
+      for (int k = 0; k < capacity; ++k) {
+        Slot slot;
+        if (from == to) { // never used: a robot sends nothing to itself
+          slots_.push_back(slot);
+          continue;
+        }
+        const std::string name = slot_name(from, to, k);
+        slot.kind = a.enumeration<MessageKind>(
+            name + ".kind", {"none", "request", "AfterMe", "OK", "Overlap", "release"},
+            MessageKind::none);
+        slot.round = a.integer(name + ".round", 0, last_chunk, 0);
+        slot.answers = a.optional_integer(name + ".answers", 0, round_tags ? last_chunk : 0);
+        slot.list = a.subset(name + ".list", names, 0);
+        slot.after_me = a.subset(name + ".AfterMe", names, 0);
+        for (int x = 1; x <= robots; ++x)
+          slot.zone.push_back(
+              a.optional_integer(name + ".zone[" + std::to_string(x) + "]", 0, last_chunk));
+        slots_.push_back(slot);
+      }
+  overflow_ = a.boolean("net.overflow", false);
+}
+
+void Network::write(State& s, const Slot& slot, const Message& m) const {
+  s[slot.kind] = m.kind;
+  s[slot.round] = m.round;
+  if (m.answers < 0)
+    s.set_bottom(slot.answers);
+  else
+    s[slot.answers] = m.answers;
+  s[slot.list] = m.list;
+  s[slot.after_me] = m.after_me;
+  for (int x = 1; x <= robots_; ++x) {
+    const auto& zone = slot.zone[static_cast<std::size_t>(x - 1)];
+    if (m.zone[static_cast<std::size_t>(x)] < 0)
+      s.set_bottom(zone);
+    else
+      s[zone] = m.zone[static_cast<std::size_t>(x)];
+  }
+}
+
+void Network::clear(State& s, const Slot& slot) const {
+  write(s, slot, Message{});
+}
+
+Message Network::read(const State& s, int from, int to, int k) const {
+  const Slot& slot = slot_of(from, to, k);
+  Message m;
+  m.kind = s[slot.kind];
+  m.round = s[slot.round];
+  m.answers = s.is_bottom(slot.answers) ? -1 : static_cast<int>(s[slot.answers]);
+  m.list = s[slot.list];
+  m.after_me = s[slot.after_me];
+  for (int x = 1; x <= robots_; ++x) {
+    const auto& zone = slot.zone[static_cast<std::size_t>(x - 1)];
+    m.zone[static_cast<std::size_t>(x)] = s.is_bottom(zone) ? -1 : static_cast<int>(s[zone]);
+  }
+  return m;
+}
+
+void Network::send(State& s, int from, int to, const Message& m) const {
+  int k = 0;
+  while (k < capacity_ && kind(s, from, to, k) != MessageKind::none)
+    ++k;
+  if (k == capacity_) {
+    s[overflow_] = true;
+    return;
+  }
+  write(s, slot_of(from, to, k), m);
+  if (order_ == ChannelOrder::fifo)
+    return;
+  // Insertion into the sorted multiset.
+  for (; k > 0; --k) {
+    const Message previous = read(s, from, to, k - 1);
+    if (!before(m, previous))
+      break;
+    write(s, slot_of(from, to, k), previous);
+    write(s, slot_of(from, to, k - 1), m);
+  }
+}
+
+Message Network::take(State& s, int from, int to, int k) const {
+  const Message m = read(s, from, to, k);
+  // Both canonical forms keep their order when the later messages move up one slot.
+  for (; k + 1 < capacity_ && kind(s, from, to, k + 1) != MessageKind::none; ++k)
+    write(s, slot_of(from, to, k), read(s, from, to, k + 1));
+  clear(s, slot_of(from, to, k));
+  return m;
+}
+
+// With `any`, equal messages in a channel are one choice (their successors are one state).
+bool Network::repeats(const State& s, int from, int to, int k) const {
+  return order_ == ChannelOrder::any && k > 0 && kind(s, from, to, k - 1) == kind(s, from, to, k) &&
+         read(s, from, to, k - 1) == read(s, from, to, k);
+}
+
+std::uint32_t Network::deliverable(const State& s, int from, int to, MessageKind wanted,
+                                   KindMask reads) const {
+  std::uint32_t count = 0;
+  for (int k = 0; k < capacity_; ++k) {
+    const MessageKind at = kind(s, from, to, k);
+    if (at == MessageKind::none)
+      break;
+    if ((reads & kind_bit(at)) == 0)
+      continue;
+    if (order_ == ChannelOrder::fifo)
+      return at == wanted ? 1 : 0;
+    if (at == wanted && !repeats(s, from, to, k))
+      ++count;
+  }
+  return count;
+}
+
+int Network::deliverable_slot(const State& s, int from, int to, MessageKind wanted, KindMask reads,
+                              std::uint32_t choice) const {
+  for (int k = 0; k < capacity_; ++k) {
+    const MessageKind at = kind(s, from, to, k);
+    if (at == MessageKind::none)
+      break;
+    if ((reads & kind_bit(at)) == 0)
+      continue;
+    if (order_ == ChannelOrder::fifo)
+      return at == wanted && choice == 0 ? k : -1;
+    if (at != wanted || repeats(s, from, to, k))
+      continue;
+    if (choice == 0)
+      return k;
+    --choice;
+  }
+  return -1;
+}
+
+} // namespace path_reservation
