@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "models/path_reservation/random_scenario.hpp"
 #include "models/path_reservation/scenario_file.hpp"
 #include "tioa/errors.hpp"
 
@@ -60,10 +61,39 @@ bool all_finished(const Protocol& p, const State& s) {
   return true;
 }
 
+std::vector<std::string> scenario_choices() {
+  std::vector<std::string> names = path_reservation::scenario_names();
+  names.push_back("random");
+  return names;
+}
+
+// Property 4 as the paper words it: "no starvation occurs unless one of the detectable
+// deadlock situations" of the Risk handler. Every robot is done, or halted by an exception,
+// or waits for good behind a halted robot (Protocol::stopped_by_exceptions).
+bool done_or_detected(const Protocol& p, const State& s) {
+  const int stopped = p.stopped_by_exceptions(s);
+  for (int i = 1; i <= p.n; ++i)
+    if (s[p.phase[i]] != path_reservation::Phase::done && (stopped >> (i - 1) & 1) == 0)
+      return false;
+  return true;
+}
+
 } // namespace
 
 path_reservation::Scenario chosen_scenario(const ParamValues& params) {
   const std::string& file = params.at("scenario_file").text();
+  if (file.empty() && choice(params, "scenario") == "random") {
+    path_reservation::RandomScenarioSpec spec;
+    spec.seed = static_cast<std::uint64_t>(params.at("seed").integer());
+    spec.robots = static_cast<int>(params.at("robots").integer());
+    spec.chunks = static_cast<int>(params.at("chunks").integer());
+    spec.plane = static_cast<int>(params.at("plane").integer());
+    try {
+      return path_reservation::random_scenario(spec);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("scenario=random: ") + e.what());
+    }
+  }
   if (file.empty())
     return path_reservation::find_scenario(choice(params, "scenario"));
   try {
@@ -113,8 +143,9 @@ ModelDefinition path_reservation_definition() {
                       "models/path_reservation/README.md, \"Scenario files\")");
   scenario_file.replaces = "scenario";
   d.params = {
-      ParamSpec::choice("scenario", "crossing", path_reservation::scenario_names(),
-                        "the robots and their paths (models/path_reservation/README.md)"),
+      ParamSpec::choice("scenario", "crossing", scenario_choices(),
+                        "the robots and their paths (models/path_reservation/README.md); random: "
+                        "drawn from seed, robots, chunks and plane"),
       scenario_file,
       ParamSpec::choice("sort", "distance", {"distance", "id"},
                         "SortSC of the Conflict resolver: distance to the shared cells then "
@@ -143,13 +174,25 @@ ModelDefinition path_reservation_definition() {
                         "a payload message passes only while sender and receiver are within C "
                         "(§2), or at any distance"),
       ParamSpec::choice("release_step", "own", {"own", "with-discover"},
-                        "the release and the next chunk's Discover are two steps, or one")};
+                        "the release and the next chunk's Discover are two steps, or one"),
+      {"seed", 1, 1, 1000000000, "scenario=random: the seed of the draw"},
+      {"robots", 3, 1, path_reservation::max_robots, "scenario=random: the number of robots"},
+      {"chunks", 2, 1, path_reservation::max_chunks, "scenario=random: chunks per robot"},
+      {"plane", 4, 2, 8, "scenario=random: the side of the square plane, in cells (C = side)"}};
+  d.instance_file = [](const ParamValues& params) {
+    return path_reservation::scenario_file_text(chosen_scenario(params));
+  };
+  d.instance_file_param = "scenario_file";
+  d.instance_file_replaces = {"scenario", "scenario_file", "seed", "robots", "chunks", "plane"};
   d.properties = {{"mutual-exclusion", "Property 2: no point is owned by two robots"},
                   {"integrity", "Property 3: a robot releases a zone only after reserving it"},
                   {"no-collision", "no two robots ever occupy the same cell"},
                   {"progress",
                    "Property 4: every robot reserves every zone of its path, or has itself "
-                   "raised a detectable deadlock"}};
+                   "raised a detectable deadlock"},
+                  {"progress-unless-detected",
+                   "Property 4 as worded: no robot starves unless a detectable deadlock was "
+                   "raised (it waits behind a halted robot)"}};
   d.build = [](const ParamValues& params) {
     const auto protocol = std::make_shared<const Protocol>(path_reservation_protocol(params));
     const auto predicate = [protocol](bool (*check)(const Protocol&, const State&)) {
@@ -195,6 +238,14 @@ ModelDefinition path_reservation_definition() {
          "every robot done or halted by an exception",
          {},
          ""},
+        {"progress-unless-detected",
+         "every execution ends with each robot done, halted by an exception, or waiting for "
+         "good behind a halted robot (Property 4: no starvation unless a detectable deadlock)",
+         PropertyKind::stabilisation,
+         predicate(done_or_detected),
+         "every robot done, halted, or behind a halted robot",
+         {},
+         ""},
     };
     for (checker::Property& property : m.properties) {
       property.beyond_bound = m.beyond_bound;
@@ -227,6 +278,25 @@ ModelDefinition path_reservation_definition() {
   d.suite.push_back(
       entry("crossing", "mutual-exclusion", Verdict::violated, "release-before-reserve"));
   d.suite.push_back(entry("crossing", "integrity", Verdict::violated, "release-before-reserve"));
+  // P1 and P2 are silent: no exception excuses them (Property 4 as worded). Round tags
+  // repair them (README, "The repair: round tags").
+  for (const char* scenario : {"head-on", "late-joiner"}) {
+    d.suite.push_back(entry(scenario, "progress-unless-detected", Verdict::violated));
+    d.suite.push_back(entry(scenario, "progress", Verdict::holds, "round-tags"));
+  }
+  // Finding P4: with channels in any order, a stale OK lets a robot reserve a cell another
+  // robot waits on (README); FIFO channels or round tags prevent it.
+  const auto random_one = [](const char* reading) {
+    ParamValues params{{"scenario", ParamValue::choice("random")}};
+    if (*reading != '\0')
+      params.emplace(
+          std::string(reading).substr(0, std::string(reading).find('=')),
+          ParamValue::choice(std::string(reading).substr(std::string(reading).find('=') + 1)));
+    return params;
+  };
+  d.suite.push_back({random_one(""), "mutual-exclusion", Verdict::violated});
+  d.suite.push_back({random_one("channels=fifo"), "mutual-exclusion", Verdict::holds});
+  d.suite.push_back({random_one("variant=round-tags"), "mutual-exclusion", Verdict::holds});
   return d;
 }
 

@@ -108,6 +108,12 @@ struct ModelDefinition {
   // The picture of a state in HTML reports; none: a table of the variables.
   Picture picture = {};
   Explain explain = {};
+  // For `sweep --save`: the instance written as a file that `instance_file_param` reads
+  // back, standing for the parameters of `instance_file_replaces`. Empty: the model cannot
+  // save its instances.
+  std::function<std::string(const ParamValues&)> instance_file = {};
+  std::string instance_file_param = "";
+  std::vector<std::string> instance_file_replaces = {};
 };
 
 // Bad input from a user: an unknown model, parameter or property, a malformed value.

@@ -20,6 +20,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_status.hpp"
 #include "cli/replay.hpp"
+#include "cli/sweep.hpp"
 #include "cli/walk.hpp"
 #include "support/text.hpp"
 #include "tioa/errors.hpp"
@@ -275,13 +276,39 @@ int run_command(int argc, char** argv, const catalogue::Catalogue& models, const
       ->type_name("MODEL");
   add_run_options(suite, settings, limits, trace, store, false);
 
+  CLI::App* sweep = app.add_subcommand(
+      "sweep", "check a model's properties over a range of one whole-number parameter (a seed, "
+               "a size): a verdict table, and with --save a file for each violated instance");
+  add_model_options(sweep, request, name);
+  SweepSettings sweep_settings;
+  sweep->add_option("--over", sweep_settings.over, "the parameter and its range: NAME=FROM..TO")
+      ->type_name("NAME=FROM..TO")
+      ->required();
+  sweep
+      ->add_option("--save", sweep_settings.save_dir,
+                   "write each instance where a property is violated into DIR, as a file the "
+                   "model reads back (path-reservation: a scenario file)")
+      ->type_name("DIR")
+      ->check(non_empty_name);
+  sweep->add_flag("--json", settings.json, "print one JSON object on stdout");
+  sweep->add_option("-j,--threads", settings.threads, "worker threads (default: all cores)")
+      ->type_name("N")
+      ->check(CLI::Range(1u, 4096u));
+  sweep
+      ->add_option("--max-seconds", limits.max_seconds, "per property of an instance (0: no limit)")
+      ->type_name("S")
+      ->check(seconds);
+  sweep->add_option("--max-states", limits.max_states, "per property of an instance (0: no limit)")
+      ->type_name("N")
+      ->check(whole_number());
+
   // The program's own commands, each with the function that runs it once given.
   std::vector<std::pair<CLI::App*, std::function<int()>>> extra;
   for (const Command& command : program.commands) {
     CLI::App* sub = app.add_subcommand(command.name, command.description);
     extra.emplace_back(sub, command.declare(*sub));
   }
-  std::vector<std::string> names{"list", "check", "explore", "walk", "replay", "suite"};
+  std::vector<std::string> names{"list", "check", "explore", "walk", "replay", "suite", "sweep"};
   for (const Command& command : program.commands)
     names.push_back(command.name);
 
@@ -329,6 +356,8 @@ int run_command(int argc, char** argv, const catalogue::Catalogue& models, const
       return command_walk(models, request, walk_settings, settings);
     if (replay->parsed())
       return command_replay(models, request.model, replay_file, replay_json);
+    if (sweep->parsed())
+      return command_sweep(models, request, sweep_settings, settings);
     for (const auto& [command, runner] : extra)
       if (command->parsed())
         return runner();

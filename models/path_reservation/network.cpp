@@ -37,8 +37,8 @@ std::string slot_name(int from, int to, int slot) {
 bool before(const Message& a, const Message& b) {
   if (a.kind == MessageKind::none || b.kind == MessageKind::none)
     return b.kind == MessageKind::none && a.kind != MessageKind::none;
-  return std::tie(a.kind, a.round, a.answers, a.list, a.after_me, a.zone) <
-         std::tie(b.kind, b.round, b.answers, b.list, b.after_me, b.zone);
+  return std::tie(a.kind, a.round, a.answers, a.previous, a.list, a.after_me, a.zone) <
+         std::tie(b.kind, b.round, b.answers, b.previous, b.list, b.after_me, b.zone);
 }
 
 } // namespace
@@ -63,6 +63,7 @@ Network::Network(tioa::Automaton& a, int robots, int capacity, ChannelOrder orde
             MessageKind::none);
         slot.round = a.integer(name + ".round", 0, last_chunk, 0);
         slot.answers = a.optional_integer(name + ".answers", 0, round_tags ? last_chunk : 0);
+        slot.previous = a.optional_integer(name + ".previous", 0, round_tags ? last_chunk : 0);
         slot.list = a.subset(name + ".list", names, 0);
         slot.after_me = a.subset(name + ".AfterMe", names, 0);
         for (int x = 1; x <= robots; ++x)
@@ -76,10 +77,14 @@ Network::Network(tioa::Automaton& a, int robots, int capacity, ChannelOrder orde
 void Network::write(State& s, const Slot& slot, const Message& m) const {
   s[slot.kind] = m.kind;
   s[slot.round] = m.round;
-  if (m.answers < 0)
-    s.set_bottom(slot.answers);
-  else
-    s[slot.answers] = m.answers;
+  const auto optional = [&](const tioa::Variable<int>& v, int value) {
+    if (value < 0)
+      s.set_bottom(v);
+    else
+      s[v] = value;
+  };
+  optional(slot.answers, m.answers);
+  optional(slot.previous, m.previous);
   s[slot.list] = m.list;
   s[slot.after_me] = m.after_me;
   for (int x = 1; x <= robots_; ++x) {
@@ -101,6 +106,7 @@ Message Network::read(const State& s, int from, int to, int k) const {
   m.kind = s[slot.kind];
   m.round = s[slot.round];
   m.answers = s.is_bottom(slot.answers) ? -1 : static_cast<int>(s[slot.answers]);
+  m.previous = s.is_bottom(slot.previous) ? -1 : static_cast<int>(s[slot.previous]);
   m.list = s[slot.list];
   m.after_me = s[slot.after_me];
   for (int x = 1; x <= robots_; ++x) {

@@ -37,6 +37,9 @@ struct Message {
   // they answer; for a request, the chunk of the receiver's request that the sender
   // answered last (README, "The repair: round tags").
   int answers = -1;
+  // A request under round tags: the last earlier round in which the sender sent the
+  // receiver a request (-1: none).
+  int previous = -1;
   // AfterMe, Overlap: Overlap_sender, its members of type "AfterMe", and for each R_x on
   // it the chunk of R_x's zone as the sender knows it (-1: not on the list).
   int list = 0, after_me = 0;
@@ -86,8 +89,8 @@ public:
 private:
   struct Slot {
     tioa::Variable<MessageKind> kind;
-    tioa::Variable<int> round, answers, list, after_me; // answers: ⊥ for -1
-    std::vector<tioa::Variable<int>> zone;              // [x - 1]
+    tioa::Variable<int> round, answers, previous, list, after_me; // ⊥ for -1
+    std::vector<tioa::Variable<int>> zone;                        // [x - 1]
   };
   const Slot& slot_of(int from, int to, int slot) const {
     return slots_[static_cast<std::size_t>(((from - 1) * robots_ + (to - 1)) * capacity_ + slot)];

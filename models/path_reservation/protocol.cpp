@@ -50,9 +50,11 @@ struct Vars {
   // Depend_i: row x holds the pairs (R_x, R_y), and which of them are "AfterMe"; the
   // chunk of each robot's zone as R_i has learnt it.
   std::vector<tioa::VariableArray<int>> depend, depend_after_me, known_zone;
-  // Round tags only: answered[i][x], the chunk of R_x's request that R_i's Reply thread
-  // answered last (⊥: none).
-  std::vector<tioa::VariableArray<int>> answered;
+  // Round tags only (README, "The repair: round tags"): answered[i][x], the chunk of R_x's
+  // request that R_i's Reply thread answered last; sent[i][x], the last chunk in which R_i
+  // sent R_x a request; named[i][x], the round of R_x whose request is msg_x, as R_x's
+  // Discover reply named it (its current chunk, or its next one between chunks); ⊥: none.
+  std::vector<tioa::VariableArray<int>> answered, sent, named;
   std::shared_ptr<const Network> net; // the messages in flight (§2)
 };
 
@@ -167,6 +169,10 @@ void next_chunk(const Geometry& g, const Vars& v, const ProtocolOptions& options
   }
   s[v.chunk[i]] = k + 1;
   start_discover(g, v, options, s, i);
+}
+
+int optional_value(const State& s, const tioa::Variable<int>& v) {
+  return s.is_bottom(v) ? -1 : static_cast<int>(s[v]);
 }
 
 // Clears what belongs to one chunk's negotiation (Algorithm 1 lines 2-3).
@@ -346,13 +352,18 @@ void Builder::declare(tioa::Automaton& a) {
     return out;
   });
   const bool tags = options_.variant == Variant::round_tags;
-  v_.answered = per_robot([&](int i) {
-    tioa::VariableArray<int> out;
-    out.first = 1;
-    for (int x = 1; tags && x <= n_; ++x)
-      out.items.push_back(a.optional_integer(name2(name2("answered", i), x), 0, max_chunks - 1));
-    return out;
-  });
+  const auto rounds = [&](const std::string& name) {
+    return per_robot([&](int i) {
+      tioa::VariableArray<int> out;
+      out.first = 1;
+      for (int x = 1; tags && x <= n_; ++x)
+        out.items.push_back(a.optional_integer(name2(name2(name, i), x), 0, max_chunks - 1));
+      return out;
+    });
+  };
+  v_.answered = rounds("answered");
+  v_.sent = rounds("sent");
+  v_.named = rounds("named");
   v_.net = std::make_shared<const Network>(a, n_, options_.capacity, options_.channels,
                                            options_.variant == Variant::round_tags);
 }
@@ -387,8 +398,18 @@ void Builder::discover(tioa::Automaton& a) {
           return;
         s[v.group[i]] = s[v.group[i]] | bit(j);
         // The reply names the zone it is about (README, "Which message is msg_j").
-        if (names_a_zone(s[v.phase[j]]))
+        const Phase at = s[v.phase[j]];
+        if (names_a_zone(at))
           s[v.known_zone[i][j]] = s[v.chunk[j]];
+        if (options.variant != Variant::round_tags)
+          return;
+        // With round tags, the round whose request will be msg_j.
+        if (at == Phase::done)
+          s.set_bottom(v.named[i][j]);
+        else
+          s[v.named[i][j]] = at == Phase::idle       ? 0
+                             : at == Phase::released ? s[v.chunk[j]] + 1
+                                                     : s[v.chunk[j]];
       });
   // Algorithm 1 lines 1 and 11: G_i is determined; request(Zone_i) to every member.
   a.internal("discover_end", {robot_i})
@@ -405,8 +426,11 @@ void Builder::discover(tioa::Automaton& a) {
         const bool tags = options.variant == Variant::round_tags;
         for (int j = 1; j <= n; ++j)
           if (has(s[v.group[i]], j)) {
-            request.answers =
-                tags && !s.is_bottom(v.answered[i][j]) ? static_cast<int>(s[v.answered[i][j]]) : -1;
+            if (tags) {
+              request.answers = optional_value(s, v.answered[i][j]);
+              request.previous = optional_value(s, v.sent[i][j]);
+              s[v.sent[i][j]] = s[v.chunk[i]];
+            }
             v.net->send(s, i, j, request);
           }
         if (s[v.group[i]] == 0)
@@ -456,14 +480,21 @@ void Builder::negotiate(tioa::Automaton& a) {
   // A request is msg_j only for the zone R_j named when it replied to Discover_i (or any
   // zone when R_j had none yet); a request for a later zone goes to the Reply thread.
   // With MsgRule::any_zone, every request from an awaited R_j is msg_j. With round tags
-  // (msg_rule aside), every request from an awaited R_j is msg_j unless it says that R_j
-  // has answered R_i's request of this round: then that answer is msg_j (README, "The
-  // repair: round tags").
+  // (msg_rule aside; README, "The repair: round tags"): not when R_j says it has answered
+  // R_i's request of this round (that answer is msg_j); else the request of the round R_j
+  // named, or of a later one when R_j sent R_i no request in the named round (that one
+  // will not come).
   const auto request_is_msg = [=](const State& s, int i, int j, const Message& m) {
     if (!expecting(s, i, j))
       return false;
-    if (tags)
-      return m.answers != s[v.chunk[i]];
+    if (tags) {
+      if (m.answers == s[v.chunk[i]])
+        return false;
+      if (s.is_bottom(v.named[i][j]))
+        return true;
+      const int named = s[v.named[i][j]];
+      return m.round == named || (m.round > named && m.previous < named);
+    }
     return options.msg_rule == MsgRule::any_zone || s.is_bottom(v.known_zone[i][j]) ||
            s[v.known_zone[i][j]] == m.round;
   };
@@ -595,6 +626,8 @@ Protocol Builder::build() {
   out.chunk = v_.chunk;
   out.step = v_.step;
   out.network = v_.net;
+  out.predecessors = v_.preds;
+  out.released = v_.released;
   return out;
 }
 
@@ -619,6 +652,24 @@ CellSet Protocol::owned(const State& s, int robot) const {
 bool Protocol::finished(const State& s, int robot) const {
   const Phase p = s[phase[robot]];
   return p == Phase::done || p == Phase::halted;
+}
+
+int Protocol::stopped_by_exceptions(const State& s) const {
+  int stopped = 0;
+  for (int r = 1; r <= n; ++r)
+    if (s[phase[r]] == Phase::halted)
+      stopped |= bit(r);
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (int r = 1; r <= n; ++r) {
+      const int unreleased = s[predecessors[r]] & ~s[released[r]];
+      if (!has(stopped, r) && s[phase[r]] == Phase::waiting && (unreleased & stopped) != 0) {
+        stopped |= bit(r);
+        grew = true;
+      }
+    }
+  }
+  return stopped;
 }
 
 bool Protocol::has_reserved(const State& s, int robot, int k) const {

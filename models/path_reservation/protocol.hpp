@@ -79,13 +79,18 @@ struct Protocol {
   tioa::Automaton system{"path-reservation"};
   std::shared_ptr<const PathGeometry> geometry;
   int n = 0;
-  tioa::VariableArray<Phase> phase;     // per robot 1..n
-  tioa::VariableArray<int> chunk, step; // the current chunk; the cell reached on it
+  tioa::VariableArray<Phase> phase;                // per robot 1..n
+  tioa::VariableArray<int> chunk, step;            // the current chunk; the cell reached on it
+  tioa::VariableArray<int> predecessors, released; // WLAfter_{->i}, and who has released
   std::shared_ptr<const Network> network;
 
   Cell position(const tioa::State& s, int robot) const; // robot: 1..n
   CellSet owned(const tioa::State& s, int robot) const; // Definition 6, and Post (Def 5)
   bool finished(const tioa::State& s, int robot) const; // done or halted
+  // The robots halted by an exception, and those that wait (for good) for the release of
+  // one of them, directly or through others that wait (Property 4's "detectable deadlock
+  // situations": README, "Progress").
+  int stopped_by_exceptions(const tioa::State& s) const; // a set: bit r - 1 for R_r
   // Whether robot has reserved (and moved on, or through) its chunk k.
   bool has_reserved(const tioa::State& s, int robot, int k) const;
   // A send found its channel full: the state stands for every continuation (README,

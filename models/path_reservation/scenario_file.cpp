@@ -170,4 +170,22 @@ Scenario read_scenario_file(const std::string& path) {
   return parse_scenario(in, support::printable(path));
 }
 
+std::string scenario_file_text(const Scenario& s) {
+  std::string description = s.description.substr(0, s.description.find('#'));
+  std::string out = "# A path-reservation scenario (format: models/path_reservation/README.md, "
+                    "\"Scenario files\").\n";
+  out += "name " + s.name + "\n";
+  if (!description.empty())
+    out += "description " + description + "\n";
+  out += "plane " + std::to_string(s.width) + " " + std::to_string(s.height) + "\n";
+  out += "range " + std::to_string(s.range) + "\n";
+  for (const auto& path : s.paths) {
+    out += "robot";
+    for (const Cell& c : path)
+      out += " " + to_string(c);
+    out += "\n";
+  }
+  return out;
+}
+
 } // namespace path_reservation

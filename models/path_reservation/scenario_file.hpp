@@ -22,4 +22,8 @@ namespace path_reservation {
 Scenario read_scenario_file(const std::string& path);
 Scenario parse_scenario(std::istream& in, const std::string& source_name);
 
+// The scenario as a file that parse_scenario reads back to it (a description with '#' in it
+// loses what follows; none of ours has one).
+std::string scenario_file_text(const Scenario& scenario);
+
 } // namespace path_reservation
