@@ -139,7 +139,7 @@ ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::
       continue;
     }
     if (spec->kind == ParamKind::text) {
-      if (text.empty() && !spec->default_value.text().empty())
+      if (text.empty())
         throw UsageError("parameter " + name +
                          ": an empty value (leave the parameter out for its default)");
       values[name] = ParamValue::text(text);

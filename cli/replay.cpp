@@ -259,9 +259,13 @@ int command_replay(const catalogue::Catalogue& models, const std::string& model,
   const Json& params = field(document, "params", name);
   if (!params.is_object())
     throw catalogue::UsageError(name + ": 'params' is not an object");
-  for (const auto& [param, value] : params.items())
+  for (const auto& [param, value] : params.items()) {
+    // An empty text is a text parameter at its default (one cannot be given empty).
+    if (value.is_string() && value.get<std::string>().empty())
+      continue;
     request.param_settings.push_back(param + "=" +
                                      (value.is_string() ? value.get<std::string>() : value.dump()));
+  }
   const BuiltModel built = build_model(models, request);
   const std::string from = document.value("from", std::string("start"));
   const std::string start = document.value("start", std::string());

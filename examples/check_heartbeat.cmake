@@ -46,7 +46,7 @@ endif()
 expect(0 "no-timelock \\(deadlock\\): HOLDS" explore heartbeat --from start --threads 1)
 expect(0 "suite: 4 checks \\(3 hold, 1 violated, 0 incomplete\\), 4 as expected.*: OK"
        suite --threads 1)
-expect(2 "^heartbeat: error: unknown command 'round' \\(commands: list, check, explore, walk, replay, suite\\)\n$"
+expect(2 "^heartbeat: error: unknown command 'round' \\(commands: list, check, explore, walk, replay, suite, sweep\\)\n$"
        round)
 expect(2 "^heartbeat: error: parameter P = 0 is out of range 1..10\n$" check heartbeat -p P=0)
 expect(2 "^heartbeat: error: unknown model 'fischer' \\(known: heartbeat\\)\n$" check fischer)

@@ -1,7 +1,7 @@
 // A heartbeat failure detector written against the installed tioa package, the way code
 // outside this repository uses it: the automata and their properties, registered as one
-// model, and the command line of tioa-check around them (list, check, explore, walk, replay, suite; text,
-// JSON, JUnit and HTML reports) from cli::run. docs/examples.md walks through it.
+// model, and the command line of tioa-check around them (list, check, explore, walk, replay, suite,
+// sweep; text, JSON, JUnit and HTML reports) from cli::run. docs/examples.md walks through it.
 //
 //   sender    output beat         clock since (0..P)   deadline: a beat is due at since = P
 //   receiver  input beat          clock heard (0..T+1) alive while it heard a beat within T

@@ -309,25 +309,26 @@ TEST_CASE("Conflict resolver: Dag_res is acyclic, keeps Dag_risk and orders ever
           "[precedence]") {
   // Every Conflict relation over four robots, every priority order as criterion, on one
   // Dag_risk (3 -> 1 -> 0): checked with a closure that shares no code with the resolver.
+  constexpr int four = 4; // below max_robots: 4! orders and 2^6 Conflict relations
   DependList depend;
   depend.members = set_of({0, 1, 2, 3});
   const Adjacency dag_risk = graph_of({{3, 1}, {1, 0}});
-  int rank[max_robots] = {0, 1, 2, 3};
+  int rank[four] = {0, 1, 2, 3};
   int checked = 0;
   do {
     const SortingCriterion by_rank = [&rank](int x, int y) { return rank[x] < rank[y]; };
     for (unsigned mask = 0; mask < 64; ++mask) {
       ZoneRelations relations;
       int bit = 0;
-      for (int x = 0; x < max_robots; ++x)
-        for (int y = x + 1; y < max_robots; ++y, ++bit)
+      for (int x = 0; x < four; ++x)
+        for (int y = x + 1; y < four; ++y, ++bit)
           if ((mask >> bit) & 1u)
             conflict(relations, x, y);
       const Adjacency dag_res = conflict_resolver(dag_risk, depend, relations, by_rank);
       REQUIRE(acyclic(dag_res));
-      for (int x = 0; x < max_robots; ++x) {
+      for (int x = 0; x < four; ++x) {
         REQUIRE((dag_res[x] & dag_risk[x]) == dag_risk[x]);
-        for (int y = 0; y < max_robots; ++y) {
+        for (int y = 0; y < four; ++y) {
           const bool ordered = ((dag_res[x] >> y) & 1u) || ((dag_res[y] >> x) & 1u);
           const bool wanted = ((relations.conflict[x] >> y) & 1u) || ((dag_risk[x] >> y) & 1u) ||
                               ((dag_risk[y] >> x) & 1u);
@@ -336,7 +337,7 @@ TEST_CASE("Conflict resolver: Dag_res is acyclic, keeps Dag_risk and orders ever
       }
       ++checked;
     }
-  } while (std::next_permutation(rank, rank + max_robots));
+  } while (std::next_permutation(rank, rank + four));
   CHECK(checked == 24 * 64);
 }
 
