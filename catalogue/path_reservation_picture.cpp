@@ -16,6 +16,7 @@
 
 #include "catalogue/picture_state.hpp"
 #include "models/path_reservation/path_geometry.hpp"
+#include "models/path_reservation/random_scenario.hpp"
 #include "models/path_reservation/scenario_file.hpp"
 
 namespace catalogue {
@@ -231,7 +232,8 @@ void arrow_between_robots(std::ostream& out, const Disc& from, const Disc& to, i
 }
 
 // The scenario the report's parameters name: its scenario file when it has one (read
-// again here; the check has just read it), else the built-in scenario.
+// again here; the check has just read it), a drawn one for `random` (drawn again from the
+// same seed and sizes), else the built-in scenario.
 path_reservation::Scenario scenario_of(const Json& params) {
   const auto file = params.find("scenario_file");
   if (file != params.end() && file->is_string() && !file->get<std::string>().empty())
@@ -239,6 +241,20 @@ path_reservation::Scenario scenario_of(const Json& params) {
   const auto name = params.find("scenario");
   if (name == params.end() || !name->is_string())
     throw std::invalid_argument("the report names no scenario");
+  if (name->get<std::string>() == "random") {
+    const auto whole = [&](const char* key) {
+      const auto it = params.find(key);
+      if (it == params.end() || !it->is_number_integer())
+        throw std::invalid_argument(std::string("the report gives no ") + key);
+      return it->get<std::int64_t>();
+    };
+    path_reservation::RandomScenarioSpec spec;
+    spec.seed = static_cast<std::uint64_t>(whole("seed"));
+    spec.robots = static_cast<int>(whole("robots"));
+    spec.chunks = static_cast<int>(whole("chunks"));
+    spec.plane = static_cast<int>(whole("plane"));
+    return path_reservation::random_scenario(spec);
+  }
   return path_reservation::find_scenario(name->get<std::string>());
 }
 
