@@ -4,6 +4,7 @@ x disk x variant) on every built-in scenario, the verdict of each property, as a
 table for models/path_reservation/README.md.
 
 usage: tools/path-reservation-readings.py [TIOA_CHECK] [--scenarios a,b,...] [--threads N]
+                                         [--where name=value,...] [--no-header]
 
 Each cell is five letters, one a property, in the order mutual-exclusion, integrity,
 no-collision, progress, progress-unless-detected: h holds, V violated, ? incomplete;
@@ -44,14 +45,18 @@ def main():
     parser.add_argument("--scenarios",
                         default="crossing,head-on,convoy,cycle,late-joiner,range-edge,pinwheel")
     parser.add_argument("--threads", type=int, default=2)
+    parser.add_argument("--where", default="", help="only the readings with these values")
+    parser.add_argument("--no-header", action="store_true")
     args = parser.parse_args()
     scenarios = args.scenarios.split(",")
-    print("| variant | msg_rule | channels | reach | disk | " + " | ".join(scenarios) + " |")
-    print("| --- " * (5 + len(scenarios)) + "|")
+    where = dict(item.split("=") for item in args.where.split(",") if item)
+    if not args.no_header:
+        print("| variant | msg_rule | channels | reach | disk | " + " | ".join(scenarios) + " |")
+        print("| --- " * (5 + len(scenarios)) + "|")
     for values in itertools.product(*[choices for _, choices in READINGS]):
         reading = list(zip([name for name, _ in READINGS], values))
-        if dict(reading)["variant"] == "round-tags" and dict(reading)["msg_rule"] != "discover-zone":
-            continue  # round tags replace the msg_j rule: msg_rule changes nothing there
+        if any(dict(reading)[k] != v for k, v in where.items()):
+            continue
         cells = [cell(args.tool, s, reading, args.threads) for s in scenarios]
         print("| " + " | ".join(values) + " | " + " | ".join(f"`{c}`" if c != "refused" else c
                                                               for c in cells) + " |",

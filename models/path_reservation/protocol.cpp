@@ -480,17 +480,17 @@ void Builder::negotiate(tioa::Automaton& a) {
   // A request is msg_j only for the zone R_j named when it replied to Discover_i (or any
   // zone when R_j had none yet); a request for a later zone goes to the Reply thread.
   // With MsgRule::any_zone, every request from an awaited R_j is msg_j. With round tags
-  // (msg_rule aside; README, "The repair: round tags"): not when R_j says it has answered
-  // R_i's request of this round (that answer is msg_j); else the request of the round R_j
-  // named, or of a later one when R_j sent R_i no request in the named round (that one
-  // will not come).
+  // (README, "The repair: round tags"): never when R_j says it has answered R_i's request
+  // of this round (that answer is msg_j); else, with any_zone, every one; with
+  // discover_zone, the request of the round R_j named, or of a later one when R_j sent R_i
+  // no request in the named round (that one will not come).
   const auto request_is_msg = [=](const State& s, int i, int j, const Message& m) {
     if (!expecting(s, i, j))
       return false;
     if (tags) {
       if (m.answers == s[v.chunk[i]])
         return false;
-      if (s.is_bottom(v.named[i][j]))
+      if (options.msg_rule == MsgRule::any_zone || s.is_bottom(v.named[i][j]))
         return true;
       const int named = s[v.named[i][j]];
       return m.round == named || (m.round > named && m.previous < named);

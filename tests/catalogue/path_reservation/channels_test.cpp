@@ -103,12 +103,14 @@ TEST_CASE("path-reservation: findings P1 and P2 under FIFO channels",
 
 TEST_CASE("path-reservation: round tags repair P1 and P2 in any order",
           "[path-reservation][channels]") {
-  for (const char* channels : {"channels=any", "channels=fifo"})
-    for (const char* scenario : {"crossing", "head-on", "convoy", "cycle", "late-joiner"}) {
-      INFO(channels << " " << scenario);
-      for (const char* property : {"mutual-exclusion", "integrity", "no-collision", "progress"})
-        CHECK(run(scenario, property, {"variant=round-tags", channels}).verdict == Verdict::holds);
-    }
+  for (const char* rule : {"msg_rule=discover-zone", "msg_rule=any-zone"})
+    for (const char* channels : {"channels=any", "channels=fifo"})
+      for (const char* scenario : {"crossing", "head-on", "convoy", "cycle", "late-joiner"}) {
+        INFO(rule << " " << channels << " " << scenario);
+        for (const char* property : {"mutual-exclusion", "integrity", "no-collision", "progress"})
+          CHECK(run(scenario, property, {"variant=round-tags", rule, channels}).verdict ==
+                Verdict::holds);
+      }
 }
 
 TEST_CASE("path-reservation: a full channel makes a check incomplete, never a wrong verdict",
