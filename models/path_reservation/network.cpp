@@ -152,40 +152,44 @@ bool Network::repeats(const State& s, int from, int to, int k) const {
          read(s, from, to, k - 1) == read(s, from, to, k);
 }
 
-std::uint32_t Network::deliverable(const State& s, int from, int to, MessageKind wanted,
-                                   KindMask reads) const {
-  std::uint32_t count = 0;
+// Visits each slot of from -> to whose message the receiver can take now (deliverable()),
+// in slot order, while `visit` returns true.
+template <class Visit>
+void Network::for_each_deliverable(const State& s, int from, int to, MessageKind wanted,
+                                   KindMask reads, Visit visit) const {
   for (int k = 0; k < capacity_; ++k) {
     const MessageKind at = kind(s, from, to, k);
     if (at == MessageKind::none)
-      break;
+      return;
     if ((reads & kind_bit(at)) == 0)
-      continue;
-    if (order_ == ChannelOrder::fifo)
-      return at == wanted ? 1 : 0;
-    if (at == wanted && !repeats(s, from, to, k))
-      ++count;
+      continue; // the receiver keeps it aside for now
+    if (order_ == ChannelOrder::fifo) {
+      if (at == wanted)
+        visit(k);
+      return;
+    }
+    if (at == wanted && !repeats(s, from, to, k) && !visit(k))
+      return;
   }
+}
+
+std::uint32_t Network::deliverable(const State& s, int from, int to, MessageKind wanted,
+                                   KindMask reads) const {
+  std::uint32_t count = 0;
+  for_each_deliverable(s, from, to, wanted, reads, [&](int) { return ++count > 0; });
   return count;
 }
 
 int Network::deliverable_slot(const State& s, int from, int to, MessageKind wanted, KindMask reads,
                               std::uint32_t choice) const {
-  for (int k = 0; k < capacity_; ++k) {
-    const MessageKind at = kind(s, from, to, k);
-    if (at == MessageKind::none)
-      break;
-    if ((reads & kind_bit(at)) == 0)
-      continue;
-    if (order_ == ChannelOrder::fifo)
-      return at == wanted && choice == 0 ? k : -1;
-    if (at != wanted || repeats(s, from, to, k))
-      continue;
-    if (choice == 0)
-      return k;
-    --choice;
-  }
-  return -1;
+  int slot = -1;
+  for_each_deliverable(s, from, to, wanted, reads, [&](int k) {
+    if (choice-- > 0)
+      return true;
+    slot = k;
+    return false;
+  });
+  return slot;
 }
 
 } // namespace path_reservation

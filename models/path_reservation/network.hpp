@@ -98,6 +98,9 @@ private:
   void write(tioa::State& s, const Slot& slot, const Message& m) const;
   void clear(tioa::State& s, const Slot& slot) const;
   bool repeats(const tioa::State& s, int from, int to, int slot) const;
+  template <class Visit>
+  void for_each_deliverable(const tioa::State& s, int from, int to, MessageKind wanted,
+                            KindMask reads, Visit visit) const;
 
   int robots_, capacity_;
   ChannelOrder order_;
