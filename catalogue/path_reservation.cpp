@@ -53,7 +53,7 @@ bool no_collision(const Protocol& p, const State& s) {
 
 // Property 4 (§6.2) as a stabilisation: every execution reaches a state where each robot
 // has reserved every zone it requested (its path is done) or has itself raised one of
-// the Risk handler's exceptions (README, "Progress").
+// the Risk handler's exceptions (README, `progress`).
 bool all_finished(const Protocol& p, const State& s) {
   for (int i = 1; i <= p.n; ++i)
     if (!p.finished(s, i))

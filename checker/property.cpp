@@ -44,10 +44,6 @@ void mark_legal_set(PropertyResult& result, const Property& property) {
     result.trace_in_legal_set.push_back(property.predicate(tioa::State(step.state.data(), 0)));
 }
 
-} // namespace
-
-namespace {
-
 PropertyResult run_check(const Automaton& system, const Property& property,
                          const StatePredicate& predicate, const ExploreOptions& named) {
   switch (property.kind) {

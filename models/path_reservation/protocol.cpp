@@ -605,8 +605,8 @@ void Builder::reserve_move_release(tioa::Automaton& a) {
         if (options.release_step == ReleaseStep::with_discover)
           next_chunk(*geo, v, options, s, i);
       });
-  // Line 1 again: the next chunk's Discover, or the end of the path (README, "Release and
-  // the next Discover").
+  // Line 1 again: the next chunk's Discover, or the end of the path (README, "Move,
+  // release, next chunk").
   a.internal("next_chunk", {robot_i})
       .pre([=](const State& s, const Params& p) {
         return !v.net->overflowed(s) && s[v.phase[p[0]]] == Phase::released;

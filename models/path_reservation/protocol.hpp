@@ -89,7 +89,7 @@ struct Protocol {
   bool finished(const tioa::State& s, int robot) const; // done or halted
   // The robots halted by an exception, and those that wait (for good) for the release of
   // one of them, directly or through others that wait (Property 4's "detectable deadlock
-  // situations": README, "Progress").
+  // situations": README, `progress-unless-detected`).
   int stopped_by_exceptions(const tioa::State& s) const; // a set: bit r - 1 for R_r
   // Whether robot has reserved (and moved on, or through) its chunk k.
   bool has_reserved(const tioa::State& s, int robot, int k) const;
