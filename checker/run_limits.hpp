@@ -7,6 +7,7 @@
 // weighed.
 
 #include <atomic>
+#include <cstdint>
 #include <optional>
 
 #include "checker/interrupt.hpp"
@@ -33,6 +34,29 @@ std::optional<StopReason> time_or_memory_exceeded(const Limits& limits, const Pr
 // or its resident memory over the limit. For the loops a check runs over the states an
 // exploration found or over a family it builds, which no exploration bounds.
 std::optional<StopReason> property_limit_reached(const Limits& limits);
+
+// property_limit_reached for such a loop, asked at items 0, 4096, 8192, ... (the clock and
+// /proc/self/statm cost too much per state); the first stop it sees stays.
+class PropertyLimitPoll {
+public:
+  explicit PropertyLimitPoll(const Limits& limits) : limits_(&limits) {}
+  // Whether the loop must stop before item `done`.
+  bool reached(std::uint64_t done) {
+    if (!stopped_ && (done & 4095) == 0)
+      if (const std::optional<StopReason> stop = property_limit_reached(*limits_)) {
+        stopped_ = true;
+        reason_ = *stop;
+      }
+    return stopped_;
+  }
+  bool stopped() const { return stopped_; }
+  StopReason reason() const { return reason_; } // when stopped()
+
+private:
+  const Limits* limits_;
+  bool stopped_ = false;
+  StopReason reason_ = StopReason::finished;
+};
 
 // Why the run stops after a level whose end (level_end.hpp) gave `ended` (none: the level
 // went in whole); none when it goes on. A limit the workers met wins over the level end's

@@ -150,13 +150,8 @@ PropertyResult check_reset_in_l1mc(const VlConfig& c, const tioa::Automaton& sys
   std::optional<checker::StateId> first_outside;
   // The counts below read every state again, and the family is built whole: the property's
   // limits bound them too (a run stopped here is incomplete, whatever it counted).
-  std::optional<checker::StopReason> stopped;
-  const auto limit_reached = [&](std::uint64_t done) {
-    if ((done & 4095) == 0 && !stopped)
-      stopped = checker::property_limit_reached(options.limits);
-    return stopped.has_value();
-  };
-  for (checker::StateId id = 0; id < ex.store.size() && !limit_reached(id); ++id)
+  checker::PropertyLimitPoll limit(options.limits);
+  for (checker::StateId id = 0; id < ex.store.size() && !limit.reached(id); ++id)
     switch (classify(ex.store.state(id))) {
     case Kind::reset:
       ++reached_reset;
@@ -177,9 +172,9 @@ PropertyResult check_reset_in_l1mc(const VlConfig& c, const tioa::Automaton& sys
   struct Stop {}; // leaves the enumeration when a limit is met
   std::uint64_t built = 0;
   try {
-    if (!stopped)
+    if (!limit.stopped())
       family.enumerate(buffer.data(), 0, [&] {
-        if (limit_reached(++built))
+        if (limit.reached(++built))
           throw Stop{};
         switch (classify(buffer.data())) {
         case Kind::reset:
@@ -221,9 +216,9 @@ PropertyResult check_reset_in_l1mc(const VlConfig& c, const tioa::Automaton& sys
     r.message = "the ResetMC predicate accepts a state that the L1MC predicate rejects";
   } else if (!ex.complete()) {
     mark_incomplete(r, ex, "every ResetMC state covered is in L1MC");
-  } else if (stopped) {
+  } else if (limit.stopped()) {
     r.verdict = Verdict::incomplete;
-    r.message = std::string(checker::describe(*stopped)) +
+    r.message = std::string(checker::describe(limit.reason())) +
                 " while the states were classified: every ResetMC state covered is in L1MC";
   } else {
     r.verdict = Verdict::holds;

@@ -90,14 +90,12 @@ Matching match_family(const VlConfig& c, const tioa::Automaton& layer, const tio
   // The matching runs after Reach, outside any exploration: the property's limits bound it
   // too. One that stops leaves Reach marked as stopped by that limit, so that the lemmas
   // report it incomplete as they do a Reach cut short.
+  checker::PropertyLimitPoll limit(options.limits);
   const auto limit_reached = [&](std::uint64_t done) {
-    if ((done & 4095) != 0)
+    if (!limit.reached(done))
       return false;
-    if (const auto stop = checker::property_limit_reached(options.limits)) {
-      m.reach.stop = *stop;
-      return true;
-    }
-    return false;
+    m.reach.stop = limit.reason();
+    return true;
   };
   std::vector<std::pair<std::uint64_t, StateId>> index;
   index.reserve(m.reach.store.size());

@@ -21,8 +21,9 @@ StateList reached_where(const tioa::Automaton& system, const tioa::StatePredicat
   complete = complete && ex.complete();
   StateList out{system.words(), {}};
   // The list is built outside the exploration: the property's limits bound it too.
+  checker::PropertyLimitPoll limit(options.limits);
   for (checker::StateId id = 0; id < ex.store.size(); ++id) {
-    if ((id & 4095) == 0 && checker::property_limit_reached(options.limits)) {
+    if (limit.reached(id)) {
       complete = false;
       break;
     }
