@@ -286,17 +286,15 @@ ModelDefinition path_reservation_definition() {
   }
   // Finding P4: with channels in any order, a stale OK lets a robot reserve a cell another
   // robot waits on (README); FIFO channels or round tags prevent it.
-  const auto random_one = [](const char* reading) {
-    ParamValues params{{"scenario", ParamValue::choice("random")}};
-    if (*reading != '\0')
-      params.emplace(
-          std::string(reading).substr(0, std::string(reading).find('=')),
-          ParamValue::choice(std::string(reading).substr(std::string(reading).find('=') + 1)));
+  const ParamValues drawn{{"scenario", ParamValue::choice("random")}};
+  const auto drawn_with = [&](const char* name, const char* value) {
+    ParamValues params = drawn;
+    params.emplace(name, ParamValue::choice(value));
     return params;
   };
-  d.suite.push_back({random_one(""), "mutual-exclusion", Verdict::violated});
-  d.suite.push_back({random_one("channels=fifo"), "mutual-exclusion", Verdict::holds});
-  d.suite.push_back({random_one("variant=round-tags"), "mutual-exclusion", Verdict::holds});
+  d.suite.push_back({drawn, "mutual-exclusion", Verdict::violated});
+  d.suite.push_back({drawn_with("channels", "fifo"), "mutual-exclusion", Verdict::holds});
+  d.suite.push_back({drawn_with("variant", "round-tags"), "mutual-exclusion", Verdict::holds});
   return d;
 }
 

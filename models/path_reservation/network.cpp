@@ -77,23 +77,13 @@ Network::Network(tioa::Automaton& a, int robots, int capacity, ChannelOrder orde
 void Network::write(State& s, const Slot& slot, const Message& m) const {
   s[slot.kind] = m.kind;
   s[slot.round] = m.round;
-  const auto optional = [&](const tioa::Variable<int>& v, int value) {
-    if (value < 0)
-      s.set_bottom(v);
-    else
-      s[v] = value;
-  };
-  optional(slot.answers, m.answers);
-  optional(slot.previous, m.previous);
+  set_value_or_none(s, slot.answers, m.answers);
+  set_value_or_none(s, slot.previous, m.previous);
   s[slot.list] = m.list;
   s[slot.after_me] = m.after_me;
-  for (int x = 1; x <= robots_; ++x) {
-    const auto& zone = slot.zone[static_cast<std::size_t>(x - 1)];
-    if (m.zone[static_cast<std::size_t>(x)] < 0)
-      s.set_bottom(zone);
-    else
-      s[zone] = m.zone[static_cast<std::size_t>(x)];
-  }
+  for (int x = 1; x <= robots_; ++x)
+    set_value_or_none(s, slot.zone[static_cast<std::size_t>(x - 1)],
+                      m.zone[static_cast<std::size_t>(x)]);
 }
 
 void Network::clear(State& s, const Slot& slot) const {
@@ -105,14 +95,13 @@ Message Network::read(const State& s, int from, int to, int k) const {
   Message m;
   m.kind = s[slot.kind];
   m.round = s[slot.round];
-  m.answers = s.is_bottom(slot.answers) ? -1 : static_cast<int>(s[slot.answers]);
-  m.previous = s.is_bottom(slot.previous) ? -1 : static_cast<int>(s[slot.previous]);
+  m.answers = value_or_none(s, slot.answers);
+  m.previous = value_or_none(s, slot.previous);
   m.list = s[slot.list];
   m.after_me = s[slot.after_me];
-  for (int x = 1; x <= robots_; ++x) {
-    const auto& zone = slot.zone[static_cast<std::size_t>(x - 1)];
-    m.zone[static_cast<std::size_t>(x)] = s.is_bottom(zone) ? -1 : static_cast<int>(s[zone]);
-  }
+  for (int x = 1; x <= robots_; ++x)
+    m.zone[static_cast<std::size_t>(x)] =
+        value_or_none(s, slot.zone[static_cast<std::size_t>(x - 1)]);
   return m;
 }
 

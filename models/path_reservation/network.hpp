@@ -53,6 +53,17 @@ struct Message {
   }
 };
 
+// An optional integer read or written as an int, -1 standing for ⊥ (the Message fields).
+inline int value_or_none(const tioa::State& s, const tioa::Variable<int>& v) {
+  return s.is_bottom(v) ? -1 : static_cast<int>(s[v]);
+}
+inline void set_value_or_none(tioa::State& s, const tioa::Variable<int>& v, int value) {
+  if (value < 0)
+    s.set_bottom(v);
+  else
+    s[v] = value;
+}
+
 // Whether the receiver reads messages of a kind now: bit k for MessageKind k.
 using KindMask = std::uint32_t;
 inline constexpr KindMask kind_bit(MessageKind kind) {

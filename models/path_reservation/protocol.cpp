@@ -171,10 +171,6 @@ void next_chunk(const Geometry& g, const Vars& v, const ProtocolOptions& options
   start_discover(g, v, options, s, i);
 }
 
-int optional_value(const State& s, const tioa::Variable<int>& v) {
-  return s.is_bottom(v) ? -1 : static_cast<int>(s[v]);
-}
-
 // Clears what belongs to one chunk's negotiation (Algorithm 1 lines 2-3).
 void clear_negotiation(const Vars& v, State& s, int i, int n) {
   s[v.group[i]] = 0;
@@ -202,8 +198,8 @@ Message list_message(const Vars& v, const State& s, int i, MessageKind kind, int
   m.list = s[v.overlap[i]];
   m.after_me = s[v.after_me[i]];
   for (int x = 1; x <= n; ++x)
-    if (has(m.list, x) && !s.is_bottom(v.known_zone[i][x]))
-      m.zone[static_cast<std::size_t>(x)] = s[v.known_zone[i][x]];
+    if (has(m.list, x))
+      m.zone[static_cast<std::size_t>(x)] = value_or_none(s, v.known_zone[i][x]);
   return m;
 }
 
@@ -427,8 +423,8 @@ void Builder::discover(tioa::Automaton& a) {
         for (int j = 1; j <= n; ++j)
           if (has(s[v.group[i]], j)) {
             if (tags) {
-              request.answers = optional_value(s, v.answered[i][j]);
-              request.previous = optional_value(s, v.sent[i][j]);
+              request.answers = value_or_none(s, v.answered[i][j]);
+              request.previous = value_or_none(s, v.sent[i][j]);
               s[v.sent[i][j]] = s[v.chunk[i]];
             }
             v.net->send(s, i, j, request);
