@@ -141,7 +141,7 @@ ModelDefinition path_reservation_definition() {
       ParamSpec::text("scenario_file", "",
                       "a scenario read from this file instead of `scenario` (format: "
                       "models/path_reservation/README.md, \"Scenario files\")");
-  scenario_file.replaces = "scenario";
+  scenario_file.replaces = {"scenario"};
   d.params = {
       ParamSpec::choice("scenario", "crossing", scenario_choices(),
                         "the robots and their paths (models/path_reservation/README.md); random: "

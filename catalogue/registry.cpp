@@ -170,10 +170,10 @@ ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::
     values[name] = value;
   }
   for (const auto& p : model.params)
-    if (!p.replaces.empty() && given.count(p.name) && given.count(p.replaces) &&
-        values.at(p.name) != p.default_value)
-      throw UsageError("parameter " + p.name + " replaces " + p.replaces + ": give one of " +
-                       given.at(p.replaces) + " and " + given.at(p.name));
+    for (const std::string& replaced : p.replaces)
+      if (given.count(p.name) && given.count(replaced) && values.at(p.name) != p.default_value)
+        throw UsageError("parameter " + p.name + " replaces " + replaced + ": give one of " +
+                         given.at(replaced) + " and " + given.at(p.name));
   if (model.check_params)
     if (auto why = model.check_params(values))
       throw UsageError("model '" + model.name + "': " + *why);
@@ -181,8 +181,12 @@ ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::
 }
 
 bool shown_param(const ModelDefinition& model, const ParamSpec& spec, const ParamValues& values) {
+  // A file parameter left empty names nothing: not shown.
+  if (const auto it = values.find(spec.name);
+      spec.kind == ParamKind::text && it != values.end() && it->second.text().empty())
+    return false;
   for (const auto& p : model.params)
-    if (p.replaces == spec.name)
+    if (std::find(p.replaces.begin(), p.replaces.end(), spec.name) != p.replaces.end())
       if (const auto it = values.find(p.name); it != values.end() && it->second != p.default_value)
         return false;
   return true;

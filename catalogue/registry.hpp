@@ -41,9 +41,10 @@ struct ParamSpec {
   // found: its default is the paper's version, and a run with another value names it in
   // every report (variant_name).
   bool variant = false;
-  // The parameter this one stands in for when it is given (scenario_file for scenario):
-  // giving both is a usage error, and the reports show this one alone (shown_params).
-  std::string replaces = "";
+  // The parameters this one stands in for when it is given (scenario_file for scenario;
+  // config for the whole instance of mc-round): giving this and one of them is a usage
+  // error, and the reports show this one alone (shown_param).
+  std::vector<std::string> replaces = {};
 
   // A choice parameter; default_choice must be one of the choices.
   static ParamSpec choice(std::string name, std::string default_choice,
@@ -141,7 +142,7 @@ private:
 // Defaults overridden by "name=value" settings; every value parsed and range-checked.
 ParamValues resolve_params(const ModelDefinition& model, const std::vector<std::string>& settings);
 // Whether a report shows `spec`: not when a parameter that replaces it has a value other
-// than its default (ParamSpec::replaces).
+// than its default (ParamSpec::replaces), nor when it is a text parameter left empty.
 bool shown_param(const ModelDefinition& model, const ParamSpec& spec, const ParamValues& values);
 
 // Which version of the algorithm `values` build: "paper" when every variant parameter has

@@ -226,6 +226,12 @@ int run_command(int argc, char** argv, const catalogue::Catalogue& models, const
   CLI::App* check = app.add_subcommand("check", "check a model's properties");
   add_model_options(check, request, name);
   add_run_options(check, settings, limits, trace, store, true);
+  check
+      ->add_option("--counterexample-out", settings.counterexample_out_path,
+                   "write the first counterexample that is an instance of its own (mc-round: a "
+                   "round configuration, JSON) to FILE; check it again with -p config=FILE")
+      ->type_name("FILE")
+      ->check(non_empty_name);
 
   CLI::App* explore = app.add_subcommand(
       "explore", "search counterexamples: invariants and deadlock / time-lock, from arbitrary "

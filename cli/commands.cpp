@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "checker/interrupt.hpp"
+#include "cli/counterexample_file.hpp"
 #include "cli/exit_status.hpp"
 #include "cli/model_run.hpp"
 #include "cli/output.hpp"
@@ -21,10 +22,11 @@ namespace {
 // The report files a run writes, each opened before the run (a path that cannot be written
 // is a usage error before anything runs).
 struct ReportFiles {
-  std::optional<std::ofstream> junit, html, trace_out;
+  std::optional<std::ofstream> junit, html, trace_out, counterexample_out;
   explicit ReportFiles(const RunSettings& settings)
       : junit(open_report_file(settings.junit_path)), html(open_report_file(settings.html_path)),
-        trace_out(open_report_file(settings.trace_out_path)) {}
+        trace_out(open_report_file(settings.trace_out_path)),
+        counterexample_out(open_report_file(settings.counterexample_out_path)) {}
 };
 
 // The properties a check or explore runs: those asked for (`chosen`), and the one given with
@@ -58,6 +60,8 @@ int report(const ModelRun& run, const catalogue::ModelDefinition& definition,
   std::optional<std::ofstream>& html = files.html;
   if (files.trace_out)
     write_trace_file(*files.trace_out, settings.trace_out_path, run);
+  if (files.counterexample_out)
+    write_counterexample_file(files.counterexample_out, settings.counterexample_out_path, run);
   if (settings.json)
     print_json(run_json(run, settings.trace != TraceMode::none));
   else

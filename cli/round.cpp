@@ -23,69 +23,6 @@ namespace cli {
 namespace {
 
 using catalogue::UsageError;
-using Input = nlohmann::json;
-
-[[noreturn]] void bad(const std::string& source, const std::string& what) {
-  throw UsageError("round config '" + source + "': " + what);
-}
-
-const Input& field(const Input& root, const std::string& source, const char* name) {
-  if (!root.contains(name))
-    bad(source, std::string("missing field '") + name + "'");
-  return root.at(name);
-}
-
-std::int64_t whole(const Input& value, std::int64_t lo, std::int64_t hi, const std::string& source,
-                   const std::string& what) {
-  if (!value.is_number_integer())
-    bad(source, what + " must be a whole number, not " + value.dump());
-  const bool too_big =
-      value.is_number_unsigned() && value.get<std::uint64_t>() > static_cast<std::uint64_t>(hi);
-  if (too_big || value.get<std::int64_t>() < lo || value.get<std::int64_t>() > hi)
-    bad(source, what + " = " + value.dump() + " is out of range " + std::to_string(lo) + ".." +
-                    std::to_string(hi));
-  return value.get<std::int64_t>();
-}
-
-mc::Rational rational(const Input& root, const std::string& source, const char* name) {
-  const Input& value = field(root, source, name);
-  if (!value.is_string())
-    bad(source, std::string("field '") + name +
-                    "' must be a string holding an exact rational like \"9/10\", not " +
-                    value.dump());
-  const auto parsed = support::parse_rational(value.get<std::string>());
-  if (!parsed)
-    bad(source, std::string("field '") + name + "': '" + value.get<std::string>() +
-                    "' is not a rational like 9/10, 1/2 or 0.9");
-  if (*parsed <= 0 || *parsed >= 1)
-    bad(source,
-        std::string("field '") + name + "' = " + mc::to_string(*parsed) + " is not in (0, 1)");
-  return *parsed;
-}
-
-// An m×m matrix of whole numbers in lo..hi, row by row (region id = row·m + column).
-std::vector<std::int64_t> matrix(const Input& root, const std::string& source, const char* name,
-                                 int m, std::int64_t hi) {
-  const Input& value = field(root, source, name);
-  const std::string shape = fmt::format("an array of {} rows of {} whole numbers", m, m);
-  if (!value.is_array() || value.size() != static_cast<std::size_t>(m))
-    bad(source, fmt::format("field '{}' must be {} (m = {}), not {}", name, shape, m,
-                            value.is_array() ? std::to_string(value.size()) + " rows"
-                                             : std::string(value.type_name())));
-  std::vector<std::int64_t> out;
-  for (int i = 0; i < m; ++i) {
-    const Input& row = value[static_cast<std::size_t>(i)];
-    if (!row.is_array() || row.size() != static_cast<std::size_t>(m))
-      bad(source, fmt::format("field '{}' must be {}: row {} has {}", name, shape, i,
-                              row.is_array() ? std::to_string(row.size()) + " entries"
-                                             : "type " + std::string(row.type_name())));
-    for (int j = 0; j < m; ++j)
-      out.push_back(whole(row[static_cast<std::size_t>(j)], 0, hi, source,
-                          fmt::format("{}[{}][{}]", name, i, j)));
-  }
-  return out;
-}
-
 std::string region_name(const mc::GridTiling& grid, mc::RegionId u) {
   const mc::Region r = grid.region(u);
   return fmt::format("({},{})", r.row, r.col);
@@ -120,7 +57,7 @@ void print_round_json(const mc::GridTiling& grid, const Outcome& outcome) {
             << ",\n  \"T_stab\": " << number(outcome.t_stab) << "\n}" << std::endl;
 }
 
-void print_text(const RoundConfig& config, const Outcome& outcome) {
+void print_text(const mc::RoundConfig& config, const Outcome& outcome) {
   const mc::RoundSystem& system = config.system;
   const mc::GridTiling& grid = system.grid();
   const int m = grid.m();
@@ -171,58 +108,20 @@ void print_text(const RoundConfig& config, const Outcome& outcome) {
 
 } // namespace
 
-RoundConfig read_round_config(std::istream& in, const std::string& source) {
-  Input root;
-  try {
-    root = Input::parse(in);
-  } catch (const Input::parse_error& e) {
-    bad(source, std::string("not valid JSON: ") + e.what());
-  }
-  if (!root.is_object())
-    bad(source, std::string("the configuration must be a JSON object, not ") + root.type_name());
-  static const char* const known[] = {"m", "nbh", "k", "rho1", "rho2", "q", "robots"};
-  for (const auto& [key, value] : root.items())
-    if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return key == k; }) ==
-        std::end(known))
-      bad(source, "unknown field '" + key + "' (fields: m, nbh, k, rho1, rho2, q, robots)");
-
-  const int m = static_cast<int>(whole(field(root, source, "m"), 1, max_grid_side, source, "m"));
-  const Input& nbh = field(root, source, "nbh");
-  if (!nbh.is_number_integer() || (nbh.get<std::int64_t>() != 4 && nbh.get<std::int64_t>() != 8))
-    bad(source, "nbh must be 4 or 8, not " + nbh.dump());
-  mc::McParams params;
-  params.k = whole(field(root, source, "k"), 1, mc::max_robots, source, "k");
-  params.rho1 = rational(root, source, "rho1");
-  params.rho2 = rational(root, source, "rho2");
-  std::vector<mc::QuantisedLength> q = matrix(root, source, "q", m, mc::max_quantised_length);
-  mc::Counts robots = matrix(root, source, "robots", m, mc::max_robots);
-  if (mc::total(robots) > mc::max_robots)
-    bad(source, "more than " + std::to_string(mc::max_robots) + " robots in all");
-  const auto neighbourhood =
-      nbh.get<std::int64_t>() == 4 ? mc::Neighbourhood::four : mc::Neighbourhood::eight;
-  try {
-    return {mc::RoundSystem(mc::GridTiling(m, neighbourhood), std::move(q), params),
-            std::move(robots)};
-  } catch (const std::invalid_argument& e) { // not reached: everything is checked above
-    bad(source, e.what());
-  }
-}
-
 int command_round(const RoundRequest& request) {
-  std::optional<RoundConfig> config;
-  // A round configuration is a grid and counts: 16 MiB is far more than any, and a device,
-  // a directory or a binary file is refused before parsing (support/text_file.hpp).
-  constexpr std::size_t max_config_bytes = 16 << 20;
-  std::string text;
+  std::optional<mc::RoundConfig> config;
   try {
-    text = request.config == "-"
-               ? support::read_text_stream(std::cin, "standard input", max_config_bytes)
-               : support::read_text_file(request.config, max_config_bytes);
+    if (request.config == "-") {
+      // A round configuration is a grid and counts: 16 MiB is far more than any.
+      std::istringstream in(
+          support::read_text_stream(std::cin, "standard input", std::size_t{16} << 20));
+      config.emplace(mc::read_round_config(in, "-"));
+    } else {
+      config.emplace(mc::read_round_config_file(request.config));
+    }
   } catch (const std::invalid_argument& e) {
-    throw UsageError("round config: " + std::string(e.what()));
+    throw UsageError(e.what());
   }
-  std::istringstream in(text);
-  config.emplace(read_round_config(in, support::printable(request.config)));
   const mc::RoundSystem& system = config->system;
 
   Outcome outcome;

@@ -24,8 +24,11 @@ struct RunSettings {
   TraceMode trace = TraceMode::text;
   std::string trace_out_path; // --trace-out: every trace as JSON to this file (trace_file.hpp)
   std::string dot_path;       // --dot: the state graph to this file (state_graph.hpp)
-  std::string start;          // --start: a start predicate (checker/state_expression.hpp)
-  std::string invariant;      // --invariant: an invariant to check besides the model's
+  // --counterexample-out (check): the first counterexample that carries an instance of its
+  // own (mc-round: a round configuration) to this file (counterexample_file.hpp)
+  std::string counterexample_out_path;
+  std::string start;     // --start: a start predicate (checker/state_expression.hpp)
+  std::string invariant; // --invariant: an invariant to check besides the model's
 };
 
 // What `check` and `explore` run: a model, its parameter settings ("name=value") and the

@@ -17,6 +17,10 @@ void check_side(int m) {
     throw std::invalid_argument("grid side m must be >= 1, not " + std::to_string(m));
 }
 
+std::size_t side_regions(int m) {
+  return static_cast<std::size_t>(m) * static_cast<std::size_t>(m);
+}
+
 using support::join;
 
 // The lexicographically smallest image of values under the symmetries.
@@ -167,8 +171,8 @@ mc::RoundSystem Setting::system() const {
 }
 
 SettingList settings(const Family& family) {
-  if (family.sides.empty() || family.neighbourhoods.empty() || family.curves.empty() ||
-      family.ks.empty() || family.rho2s.empty())
+  if (family.sides.empty() || family.neighbourhoods.empty() ||
+      (family.curves.empty() && !family.given_curve) || family.ks.empty() || family.rho2s.empty())
     throw std::invalid_argument("the family has an empty list of sides, neighbourhoods, curves, "
                                 "k or rho2");
   SettingList list;
@@ -181,7 +185,15 @@ SettingList settings(const Family& family) {
     std::vector<std::pair<std::string, std::vector<QuantisedLength>>> curves;
     std::vector<std::vector<QuantisedLength>> seen;
     const auto symmetries = grid_symmetries(side.m);
-    for (const std::string& name : family.curves) {
+    if (family.given_curve) {
+      if (family.given_curve->m != side.m || family.given_curve->q.size() != side_regions(side.m))
+        throw std::invalid_argument("the curve " + family.given_curve->name +
+                                    " is for m = " + std::to_string(family.given_curve->m) +
+                                    ", not for the family's side m = " + std::to_string(side.m));
+      curves.emplace_back(family.given_curve->name, family.given_curve->q);
+    }
+    for (const std::string& name :
+         family.given_curve ? std::vector<std::string>{} : family.curves) {
       auto q = curve_q(name, side.m);
       const auto form = canonical(q, symmetries);
       const auto it = std::find(seen.begin(), seen.end(), form);
@@ -198,7 +210,13 @@ SettingList settings(const Family& family) {
       for (const auto& [name, q] : curves)
         for (RobotCount k : family.ks)
           for (const mc::Rational& rho2 : family.rho2s) {
-            Setting s{side.m, neighbourhood, name, q, k, rho2, family.rho1, side.max_count};
+            Setting s{side.m,         neighbourhood,        name, q, k, rho2, family.rho1,
+                      side.max_count, family.configurations};
+            for (const Counts& counts : s.configurations)
+              if (counts.size() != side_regions(side.m))
+                throw std::invalid_argument(
+                    "a given configuration has " + std::to_string(counts.size()) +
+                    " regions, not m x m = " + std::to_string(side_regions(side.m)));
             (void)s.system(); // validates k, ρ1, ρ2 and q
             list.settings.push_back(std::move(s));
           }
@@ -208,6 +226,11 @@ SettingList settings(const Family& family) {
 
 Coverage for_each_configuration(const Setting& setting, bool use_symmetry,
                                 const std::function<void(const Counts&, std::uint64_t)>& visit) {
+  if (!setting.configurations.empty()) {
+    for (const Counts& counts : setting.configurations)
+      visit(counts, 1);
+    return {setting.configurations.size(), 0};
+  }
   const auto symmetries =
       use_symmetry ? symmetries_fixing(setting.m, setting.q) : std::vector<std::vector<RegionId>>{};
   const std::size_t regions = setting.q.size();
@@ -266,12 +289,21 @@ std::string describe(const Family& family) {
     ks.push_back(std::to_string(k));
   for (const auto& r : family.rho2s)
     rho2s.push_back(mc::to_string(r));
-  return "m x m grids, m in {" + join(sides) + "}; neighbourhood " + join(neighbourhoods) +
-         "; curves {" + join(family.curves) + "} (q per region in units of sigma); k in {" +
-         join(ks) + "}; rho2 in {" + join(rho2s) + "}; every configuration of counts per region" +
-         (family.use_symmetry ? ", one per orbit of the rotations and reflections of the square "
-                                "that fix q"
-                              : ", no symmetry reduction");
+  const std::string curves =
+      family.given_curve ? "curve " + family.given_curve->name
+                         : "curves {" + join(family.curves) + "} (q per region in units of sigma)";
+  const std::string configurations =
+      !family.configurations.empty()
+          ? "the " + std::to_string(family.configurations.size()) + " given configuration" +
+                (family.configurations.size() == 1 ? "" : "s") + " of counts"
+          : "every configuration of counts per region" +
+                std::string(family.use_symmetry ? ", one per orbit of the rotations and "
+                                                  "reflections of the square that fix q"
+                                                : ", no symmetry reduction");
+  if (!family.configurations.empty())
+    sides = {std::to_string(family.sides.front().m)};
+  return "m x m grids, m in {" + join(sides) + "}; neighbourhood " + join(neighbourhoods) + "; " +
+         curves + "; k in {" + join(ks) + "}; rho2 in {" + join(rho2s) + "}; " + configurations;
 }
 
 std::string describe(const Setting& s) {

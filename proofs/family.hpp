@@ -19,6 +19,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,14 @@ const std::vector<std::string>& curve_names();
 // q of the named curve on an m×m grid, by RegionId (row·m + col). Throws
 // std::invalid_argument for an unknown name (listing the known ones) or m < 1.
 std::vector<QuantisedLength> curve_q(const std::string& name, int m);
+
+// A curve given as its q matrix rather than by name: read from a curve file or a round
+// configuration (models/mc/curve_file.hpp, round_config.hpp), or drawn by a search.
+struct GivenCurve {
+  std::string name; // what reports call it: "curve file c.txt", "grid path …"
+  int m = 1;
+  std::vector<QuantisedLength> q; // by RegionId
+};
 
 // ---- Symmetries of the square
 
@@ -84,6 +93,12 @@ struct Family {
   std::vector<mc::Rational> rho2s{{1, 2}, {9, 10}, {1, 10}, {2, 3}};
   mc::Rational rho1{1, 2}; // not used by assign (calctarget only); fixed
   bool use_symmetry = true;
+  // Set: this curve instead of `curves`; every side must be its m.
+  std::optional<GivenCurve> given_curve;
+  // Non-empty: exactly these configurations of counts, in this order, each checked once
+  // (no symmetry), instead of every configuration with counts 0..c; every side must have
+  // their m. For a check along one run (`-p config=PATH`).
+  std::vector<Counts> configurations;
 
   // The default family of the lemma checks for one neighbourhood.
   static Family standard(mc::Neighbourhood neighbourhood);
@@ -99,6 +114,8 @@ struct Setting {
   mc::Rational rho2{9, 10};
   mc::Rational rho1{1, 2};
   RobotCount max_count = 0;
+  // Non-empty: the only configurations of this setting (Family::configurations).
+  std::vector<Counts> configurations = {};
 
   mc::RoundSystem system() const;
 };
@@ -124,7 +141,8 @@ SettingList settings(const Family& family);
 // Visits every configuration of a setting (counts 0..max_count per region, the last
 // region's count changing fastest) that is the lexicographically smallest of its orbit
 // under the symmetries fixing q — every configuration when use_symmetry is false — with
-// the size of its orbit (1 without symmetry).
+// the size of its orbit (1 without symmetry). A setting with `configurations` visits
+// exactly those, each with orbit 1.
 struct Coverage {
   std::uint64_t visited = 0; // configurations visited (instances checked)
   std::uint64_t skipped = 0; // symmetric duplicates not visited

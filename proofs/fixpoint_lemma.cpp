@@ -114,6 +114,9 @@ std::vector<std::string> BoundWitness::lines() const {
                 ", fixed point at round " + std::to_string(fixpoint_round));
   out.push_back("  measured " + rational_text(measurement.value) + (violated() ? " > " : " <= ") +
                 "bound " + rational_text(measurement.bound) + ": " + measurement.detail);
+  if (violated())
+    out.push_back("  as a round configuration (tioa-check round --config, -p config=): " +
+                  config_json(setting, start).dump());
   return out;
 }
 
@@ -135,6 +138,8 @@ std::string BoundWitness::json() const {
   out["measured"] = rational_text(measurement.value);
   out["bound"] = rational_text(measurement.bound);
   out["detail"] = measurement.detail;
+  if (violated())
+    out["config"] = config_json(setting, start);
   return out.dump();
 }
 

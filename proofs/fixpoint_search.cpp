@@ -1,4 +1,6 @@
 #include "proofs/fixpoint_search.hpp"
+
+#include "proofs/random_curve.hpp"
 #include "support/text.hpp"
 
 #include <algorithm>
@@ -88,8 +90,13 @@ std::string describe_search(const FixpointSearchOptions& o) {
     rho2s.push_back(mc::to_string(r));
   return "random search, seed " + std::to_string(o.seed) + ", " + std::to_string(o.samples) +
          " samples: m in " + std::to_string(o.min_side) + ".." + std::to_string(o.max_side) +
-         ", neighbourhood " + to_string(o.neighbourhood) + ", curves {" + join(o.curves) +
-         "}, k in {" + join(ks) + "}, rho2 in {" + join(rho2s) + "}, counts 0.." +
+         ", neighbourhood " + to_string(o.neighbourhood) + ", " +
+         (o.given_curve ? "the curve " + o.given_curve->name
+                        : std::string(o.grid_paths ? "a third of the samples a random grid path "
+                                                     "(proofs/random_curve.hpp), the rest "
+                                                   : "") +
+                              "curves {" + join(o.curves) + "}") +
+         ", k in {" + join(ks) + "}, rho2 in {" + join(rho2s) + "}, counts 0.." +
          std::to_string(o.max_count) +
          " per region (a third uniform, a third 1 to 3 piles, a third a plateau with dips); "
          "each run to its fixed point in the default order; counterexamples " +
@@ -100,7 +107,8 @@ std::string describe_search(const FixpointSearchOptions& o) {
 
 std::vector<FixpointSample> fixpoint_samples(const FixpointSearchOptions& options) {
   if (options.min_side < 1 || options.max_side < options.min_side || options.max_count < 0 ||
-      options.curves.empty() || options.ks.empty() || options.rho2s.empty() || options.samples == 0)
+      (options.curves.empty() && !options.given_curve) || options.ks.empty() ||
+      options.rho2s.empty() || options.samples == 0)
     throw std::invalid_argument("fixed-point search: need 1 <= min_side <= max_side, "
                                 "max_count >= 0, some curves, k and rho2, and a sample");
   SplitMix64 random(options.seed);
@@ -109,11 +117,22 @@ std::vector<FixpointSample> fixpoint_samples(const FixpointSearchOptions& option
   for (std::uint64_t s = 0; s < options.samples; ++s) {
     FixpointSample sample;
     Setting& setting = sample.setting;
-    setting.m = options.min_side + static_cast<int>(random.below(static_cast<std::uint64_t>(
-                                       options.max_side - options.min_side + 1)));
+    setting.m = options.given_curve
+                    ? options.given_curve->m
+                    : options.min_side + static_cast<int>(random.below(static_cast<std::uint64_t>(
+                                             options.max_side - options.min_side + 1)));
     setting.neighbourhood = options.neighbourhood;
-    setting.curve = options.curves[random.below(options.curves.size())];
-    setting.q = curve_q(setting.curve, setting.m);
+    if (options.given_curve) {
+      setting.curve = options.given_curve->name;
+      setting.q = options.given_curve->q;
+    } else if (options.grid_paths && random.below(3) == 0) {
+      const GridPathCurve path = random_grid_path(setting.m, random);
+      setting.curve = path.describe();
+      setting.q = path.q;
+    } else {
+      setting.curve = options.curves[random.below(options.curves.size())];
+      setting.q = curve_q(setting.curve, setting.m);
+    }
     setting.k = options.ks[random.below(options.ks.size())];
     setting.rho2 = options.rho2s[random.below(options.rho2s.size())];
     setting.rho1 = options.rho1;

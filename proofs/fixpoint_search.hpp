@@ -35,6 +35,10 @@ struct FixpointSearchOptions {
   // (a level B, each region B ± B/4, an eighth of the regions a dip to 0..B/2).
   RobotCount max_count = 500;
   std::vector<std::string> curves = curve_names(); // named curves (proofs/family.hpp)
+  // A third of the samples on a random grid path (proofs/random_curve.hpp) instead; false:
+  // named curves only. given_curve: every sample on that curve, m its side.
+  bool grid_paths = true;
+  std::optional<GivenCurve> given_curve;
   std::vector<RobotCount> ks{1, 2, 3};
   std::vector<mc::Rational> rho2s{{1, 2}, {9, 10}, {1, 10}, {2, 3}};
   mc::Rational rho1{1, 2};          // not used by assign; fixed

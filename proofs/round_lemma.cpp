@@ -1,4 +1,6 @@
 #include "proofs/round_lemma.hpp"
+
+#include "proofs/random_curve.hpp"
 #include "proofs/witness_json.hpp"
 #include "support/text.hpp"
 
@@ -202,24 +204,6 @@ LemmaCheck finish(const RoundLemma& lemma, RoundTallies&& tallies, const std::st
 
 } // namespace
 
-// ---- SplitMix64
-
-std::uint64_t SplitMix64::next() {
-  std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
-std::uint64_t SplitMix64::below(std::uint64_t bound) {
-  if (bound == 0)
-    throw std::invalid_argument("SplitMix64::below(0)");
-  const std::uint64_t limit = UINT64_MAX - UINT64_MAX % bound; // accept [0, limit)
-  for (;;)
-    if (const std::uint64_t x = next(); x < limit)
-      return x % bound;
-}
-
 // ---- Counterexamples and tallies
 
 std::vector<std::string> RoundCounterexample::lines() const {
@@ -250,6 +234,8 @@ std::vector<std::string> RoundCounterexample::lines() const {
   for (auto& line : matrix_lines(m, after, "    ", false))
     out.push_back(std::move(line));
   out.push_back("  fails: " + why);
+  out.push_back("  as a round configuration (tioa-check round --config, -p config=): " +
+                config_json(setting, before).dump());
   return out;
 }
 
@@ -265,6 +251,7 @@ std::string RoundCounterexample::json() const {
   out["flow"] = flow_json(m, flow);
   out["counts_after"] = grid_json(m, after);
   out["why"] = why;
+  out["config"] = config_json(setting, before);
   return out.dump();
 }
 
@@ -539,6 +526,19 @@ RoundCounterexample shrink(const RoundLemma& lemma, std::size_t claim,
 
 // ---- The random search
 
+namespace {
+
+std::string search_curves(const SearchOptions& options, const std::vector<std::string>& curves) {
+  if (options.given_curve)
+    return "the curve " + options.given_curve->name;
+  return std::string(options.grid_paths ? "a third of the samples a random grid path "
+                                          "(proofs/random_curve.hpp), the rest "
+                                        : "") +
+         "curves {" + join(curves, ", ") + "} (random: each region off the curve or q in 1..3)";
+}
+
+} // namespace
+
 LemmaCheck search_random(const RoundLemma& lemma, const SearchOptions& options) {
   const auto start = Clock::now();
   if (options.min_side < 1 || options.max_side < options.min_side || options.max_count < 0 ||
@@ -554,17 +554,28 @@ LemmaCheck search_random(const RoundLemma& lemma, const SearchOptions& options) 
 
   for (std::uint64_t sample = 0; sample < options.samples && stop.next(); ++sample) {
     Setting setting;
-    setting.m = options.min_side + static_cast<int>(random.below(static_cast<std::uint64_t>(
-                                       options.max_side - options.min_side + 1)));
+    setting.m = options.given_curve
+                    ? options.given_curve->m
+                    : options.min_side + static_cast<int>(random.below(static_cast<std::uint64_t>(
+                                             options.max_side - options.min_side + 1)));
     setting.neighbourhood = options.neighbourhood;
-    setting.curve = curves[random.below(curves.size())];
     const std::size_t regions = static_cast<std::size_t>(setting.m * setting.m);
-    if (setting.curve == "random") {
-      setting.q.resize(regions);
-      for (auto& q : setting.q)
-        q = random.below(2) == 0 ? 0 : static_cast<QuantisedLength>(1 + random.below(3));
+    if (options.given_curve) {
+      setting.curve = options.given_curve->name;
+      setting.q = options.given_curve->q;
+    } else if (options.grid_paths && random.below(3) == 0) {
+      const GridPathCurve path = random_grid_path(setting.m, random);
+      setting.curve = path.describe();
+      setting.q = path.q;
     } else {
-      setting.q = curve_q(setting.curve, setting.m);
+      setting.curve = curves[random.below(curves.size())];
+      if (setting.curve == "random") {
+        setting.q.resize(regions);
+        for (auto& q : setting.q)
+          q = random.below(2) == 0 ? 0 : static_cast<QuantisedLength>(1 + random.below(3));
+      } else {
+        setting.q = curve_q(setting.curve, setting.m);
+      }
     }
     setting.k = options.ks[random.below(options.ks.size())];
     setting.rho2 = options.rho2s[random.below(options.rho2s.size())];
@@ -620,9 +631,9 @@ LemmaCheck search_random(const RoundLemma& lemma, const SearchOptions& options) 
       "random search, seed " + std::to_string(options.seed) + ", " +
       std::to_string(options.samples) + " samples: m in " + std::to_string(options.min_side) +
       ".." + std::to_string(options.max_side) + ", neighbourhood " +
-      to_string(options.neighbourhood) + ", curves {" + join(curves, ", ") +
-      "} (random: each region off the curve or q in 1..3), k in {" + join(ks, ", ") +
-      "}, rho2 in {" + join(rho2s, ", ") + "}, counts 0.." + std::to_string(options.max_count) +
+      to_string(options.neighbourhood) + ", " + search_curves(options, curves) + ", k in {" +
+      join(ks, ", ") + "}, rho2 in {" + join(rho2s, ", ") + "}, counts 0.." +
+      std::to_string(options.max_count) +
       " per region (half independent: 0, 1..10 or anything; half a plateau with noise and dips); "
       "every outcome of the round, or " +
       std::to_string(options.sampled_outcomes) + " sampled and the default order beyond " +

@@ -34,6 +34,7 @@
 #include "proofs/claim_tally.hpp"
 #include "proofs/family.hpp"
 #include "proofs/family_stop.hpp"
+#include "proofs/split_mix64.hpp"
 
 namespace proofs {
 
@@ -138,6 +139,11 @@ struct SearchOptions {
   RobotCount max_count = 500; // a region holds 0..max_count robots (see README for the mix)
   std::vector<RobotCount> ks{1, 2, 3};
   std::vector<mc::Rational> rho2s{{1, 2}, {9, 10}, {1, 10}, {2, 3}};
+  // Curves: a third of the samples a random grid path (proofs/random_curve.hpp), the rest a
+  // named curve or "random" (each region off the curve or q in 1..3); grid_paths = false
+  // leaves the paths out. given_curve: every sample on that curve, m its side.
+  bool grid_paths = true;
+  std::optional<GivenCurve> given_curve;
   // More combinations of per-region outcomes than this: check `sampled_outcomes` of them,
   // drawn from the seeded generator, and the default order.
   std::size_t outcome_limit = 4'096;
@@ -173,17 +179,5 @@ Instance shrink_instance(const Instance& start, const std::function<bool(const I
 RoundCounterexample shrink(const RoundLemma& lemma, std::size_t claim,
                            const RoundCounterexample& start, std::size_t outcome_limit = 4'096,
                            std::size_t sampled = 64);
-
-// A small, fixed, portable generator (SplitMix64) for the search.
-class SplitMix64 {
-public:
-  explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next();
-  // Uniform in 0..bound-1 (bound >= 1), by rejection: the same numbers on every platform.
-  std::uint64_t below(std::uint64_t bound);
-
-private:
-  std::uint64_t state_;
-};
 
 } // namespace proofs

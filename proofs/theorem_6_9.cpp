@@ -382,9 +382,12 @@ std::vector<NamedCurve> positional_curves(int m) {
 
 std::string PositionalFamily::describe() const {
   std::vector<std::string> parts;
+  if (!not_checked.empty())
+    return "not checked: " + not_checked;
   for (int m : sides) {
     std::vector<std::string> names;
-    for (const NamedCurve& c : positional_curves(m))
+    for (const NamedCurve& c :
+         given_curve ? std::vector<NamedCurve>{*given_curve} : positional_curves(m))
       names.push_back(c.name);
     parts.push_back(std::to_string(m) + " (" + join(names) + ")");
   }
@@ -450,10 +453,13 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
 
   // The settings, in enumeration order; curves are built once per side.
   std::vector<std::vector<NamedCurve>> curves_by_side;
-  for (int m : positions.sides)
-    curves_by_side.push_back(positional_curves(m));
+  const std::vector<int> sides =
+      positions.not_checked.empty() ? positions.sides : std::vector<int>{};
+  for (int m : sides)
+    curves_by_side.push_back(positions.given_curve ? std::vector<NamedCurve>{*positions.given_curve}
+                                                   : positional_curves(m));
   std::vector<PositionSetting> settings;
-  for (std::size_t s = 0; s < positions.sides.size(); ++s)
+  for (std::size_t s = 0; s < sides.size(); ++s)
     for (mc::Neighbourhood nbh : positions.neighbourhoods) {
       const int m = positions.sides[s];
       if (m == 1 && nbh != positions.neighbourhoods.front())
@@ -611,6 +617,11 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
   } else if (!undecided.empty()) {
     r.verdict = checker::Verdict::incomplete;
     r.message = "incomplete: undecided within the round limit: " + join(undecided) + "; " + scope;
+  } else if (!positions.not_checked.empty()) {
+    r.verdict = checker::Verdict::incomplete;
+    r.message = "incomplete: part (1) holds at count level; part (2) with positions not "
+                "checked: " +
+                positions.not_checked + "; " + scope;
   } else if (positions.samples > 0) {
     r.verdict = checker::Verdict::incomplete;
     r.message = "holds on " + std::to_string(positions.samples) +

@@ -81,6 +81,11 @@ struct PositionalFamily {
   std::uint64_t samples = 0;
   std::uint64_t seed = 1;
   RobotCount sample_max_count = 12;
+  // Set: this curve instead of positional_curves(m); `sides` must be its side alone.
+  std::optional<NamedCurve> given_curve;
+  // Non-empty: part (2) is not checked, for this reason (a curve given as q alone has no
+  // geometry); the verdict is then at best incomplete.
+  std::string not_checked;
 
   std::string describe() const;
 };

@@ -37,4 +37,16 @@ Json flow_json(int m, const mc::Flow& flow) {
   return out;
 }
 
+Json config_json(const Setting& setting, const Counts& robots) {
+  Json out;
+  out["m"] = setting.m;
+  out["nbh"] = std::stoi(to_string(setting.neighbourhood));
+  out["k"] = setting.k;
+  out["rho1"] = mc::to_string(setting.rho1);
+  out["rho2"] = mc::to_string(setting.rho2);
+  out["q"] = grid_json(setting.m, {setting.q.begin(), setting.q.end()});
+  out["robots"] = grid_json(setting.m, robots);
+  return out;
+}
+
 } // namespace proofs

@@ -20,5 +20,9 @@ Json grid_json(int m, const std::vector<std::int64_t>& values);
 // "rho2"}
 Json setting_json(const Setting& setting);
 Json flow_json(int m, const mc::Flow& flow);
+// The setting with these counts as a round configuration (models/mc/round_config.hpp):
+// {"m", "nbh", "k", "rho1", "rho2", "q", "robots"}, what `round --config` runs and
+// `-p config=` checks; a counterexample carries it as "config" (--counterexample-out).
+Json config_json(const Setting& setting, const Counts& robots);
 
 } // namespace proofs

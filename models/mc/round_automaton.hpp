@@ -20,6 +20,11 @@ struct RoundAutomaton {
 
 RoundAutomaton round_automaton(const RoundSystem& system, RobotCount start_max);
 
+// The same with one start state, `start` (one count per region); std::invalid_argument when
+// it does not fit the grid or holds more than max_automaton_robots robots.
+inline constexpr RobotCount max_automaton_robots = 1'000'000'000;
+RoundAutomaton round_automaton(const RoundSystem& system, const Counts& start);
+
 // The counts of a state of the round automaton.
 Counts counts_of(const tioa::VariableArray<int>& y, const tioa::State& s);
 

@@ -159,11 +159,13 @@ TEST_CASE("mc-round: samples > 0 runs the seeded random search on every lemma pr
     if (name.rfind("lemma-", 0) != 0 || name == "lemma-6.8")
       continue;
     INFO("property " << name);
-    const checker::PropertyResult r = run(name, {"m=2", "nbh=8", "samples=3", "seed=7"});
+    const checker::PropertyResult r =
+        run(name, {"m=2", "nbh=8", "samples=3", "seed=7", "search_m=5"});
     CHECK(r.verdict != Verdict::holds);
     CHECK(r.states == 3);
     CHECK_THAT(figure(r, "covered"), Catch::StartsWith("random search, seed 7, 3 samples: m in "
-                                                       "2..2, neighbourhood 8"));
+                                                       "2..5, neighbourhood 8, a third of the "
+                                                       "samples a random grid path"));
   }
 }
 

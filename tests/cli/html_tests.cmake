@@ -101,7 +101,7 @@ foreach(variant IN ITEMS "" _chromium)
             COMMAND ${tioa_check} check path-reservation
                     -p scenario=crossing,variant=release-before-reserve --prop no-collision
                     --threads 1 --html ${html_out}/path_reservation${variant}.html
-            PAGE_REGEX "<title>tioa-check: path-reservation \\(scenario=crossing, scenario_file=[^,]*, sort=distance, variant=release-before-reserve, [^<]*\\)</title>"
+            PAGE_REGEX "<title>tioa-check: path-reservation \\(scenario=crossing, sort=distance, variant=release-before-reserve, [^<]*\\)</title>"
                        "<b>no-collision</b> \\(invariant\\): <span class=\"verdict-violated\">violated</span>"
                        "<svg [^>]*class=\"path-reservation\""
                        "<polyline class=\"path r1\"" "<polyline class=\"path r2\""

@@ -81,6 +81,7 @@ TEST_CASE("fixpoint search: the given curve, k and rho2 are the only ones drawn"
   FixpointSearchOptions options = few_samples(mc::Neighbourhood::four);
   options.min_side = options.max_side = 3;
   options.curves = {"hub-3"};
+  options.grid_paths = false;
   options.ks = {2};
   options.rho2s = {{1, 2}};
   for (const FixpointSample& s : fixpoint_samples(options)) {
@@ -146,4 +147,21 @@ TEST_CASE("fixpoint search: shrink_fixpoint keeps what it is given when nothing 
   CHECK(shrunk.setting.curve == "none");
   sample.start = {2};
   CHECK(!fixpoint_violation(lemma, 0, sample));
+}
+
+TEST_CASE("fixpoint search: a third of the samples are random grid paths, or the given curve",
+          "[proofs][fixpoint-search]") {
+  FixpointSearchOptions options = few_samples(mc::Neighbourhood::four);
+  options.samples = 60;
+  std::size_t paths = 0;
+  for (const FixpointSample& s : fixpoint_samples(options))
+    paths += s.setting.curve.rfind("a grid path through", 0) == 0 ? 1 : 0;
+  CHECK(paths >= 10);
+  CHECK(paths <= 35);
+  options.given_curve = GivenCurve{"mine", 2, {0, 1, 2, 0}};
+  for (const FixpointSample& s : fixpoint_samples(options)) {
+    CHECK(s.setting.m == 2);
+    CHECK(s.setting.curve == "mine");
+    CHECK(s.setting.q == std::vector<QuantisedLength>{0, 1, 2, 0});
+  }
 }

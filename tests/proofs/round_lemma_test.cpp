@@ -157,6 +157,9 @@ TEST_CASE("round lemmas: the counterexample prints as the instance, both rounds 
             "  fails: g = (1,1), h = (1,0): y_g(t)/q_g = 1 < y_h(t)/q_h = 2 = max over Nbrs_g, but "
             "y_g(t+1)/q_g = 2 > y_h/q_h - sigma/q_max^2 = 1 (q_max = 1 sigma; g receives 1 from "
             "(0,1) and sends nothing)",
+            "  as a round configuration (tioa-check round --config, -p config=): "
+            "{\"m\":2,\"nbh\":4,\"k\":1,\"rho1\":\"1/2\",\"rho2\":\"1/2\",\"q\":[[0,0],[1,1]],"
+            "\"robots\":[[0,2],[2,1]]}",
         });
 }
 

@@ -1,0 +1,155 @@
+#include "proofs/random_curve.hpp"
+
+#include <array>
+#include <set>
+#include <utility>
+
+#include "models/mc/curve_local.hpp"
+#include "models/mc/grid.hpp"
+
+namespace proofs {
+
+namespace {
+
+using mc::Rational;
+using mc::RationalPoint;
+
+struct Cell {
+  int row = 0, col = 0;
+};
+
+// A lattice point strictly inside the region: (col + i/8, row + j/8), i, j in 1..7.
+RationalPoint inside(const Cell& cell, SplitMix64& random) {
+  const auto eighth = [&] { return Rational(static_cast<long>(1 + random.below(7)), 8); };
+  const Rational x = Rational(cell.col) + eighth();
+  const Rational y = Rational(cell.row) + eighth();
+  return {x, y};
+}
+
+// The point where the path goes from `from` to its neighbour `to`: strictly inside their
+// shared side, or their shared vertex for a diagonal step.
+RationalPoint crossing(const Cell& from, const Cell& to, SplitMix64& random) {
+  const int drow = to.row - from.row, dcol = to.col - from.col;
+  const Rational along(static_cast<long>(1 + random.below(7)), 8);
+  if (drow == 0) // a vertical side at x = max(col)
+    return {Rational(std::max(from.col, to.col)), Rational(from.row) + along};
+  if (dcol == 0) // a horizontal side at y = max(row)
+    return {Rational(from.col) + along, Rational(std::max(from.row, to.row))};
+  return {Rational(std::max(from.col, to.col)), Rational(std::max(from.row, to.row))};
+}
+
+} // namespace
+
+std::string GridPathCurve::describe() const {
+  std::string out = "a grid path through " + std::to_string(path.size()) + " region" +
+                    (path.size() == 1 ? "" : "s");
+  std::vector<std::string> notes;
+  if (vertex_steps > 0)
+    notes.push_back(std::to_string(vertex_steps) + " step" + (vertex_steps == 1 ? "" : "s") +
+                    " through a vertex");
+  if (rows_reentered > 0)
+    notes.push_back("re-enters " + std::to_string(rows_reentered) + " row" +
+                    (rows_reentered == 1 ? "" : "s"));
+  if (!notes.empty()) {
+    out += " (";
+    for (std::size_t i = 0; i < notes.size(); ++i)
+      out += (i ? ", " : "") + notes[i];
+    out += ")";
+  }
+  return out + ", sigma = " + mc::to_string(sigma);
+}
+
+GridPathCurve random_grid_path(int m, SplitMix64& random) {
+  if (m < 1)
+    throw std::invalid_argument("random_grid_path: m must be >= 1, not " + std::to_string(m));
+  const auto regions = static_cast<std::uint64_t>(m) * static_cast<std::uint64_t>(m);
+  const std::uint64_t shape = random.below(3);
+  const std::uint64_t length = shape == 0 ? 1 + random.below(static_cast<std::uint64_t>(m))
+                               : shape == 1
+                                   ? 1 + random.below(std::max<std::uint64_t>(1, regions / 2))
+                                   : regions;
+  const auto id = [m](const Cell& c) { return static_cast<mc::RegionId>(c.row * m + c.col); };
+  const auto on_grid = [m](const Cell& c) {
+    return c.row >= 0 && c.row < m && c.col >= 0 && c.col < m;
+  };
+
+  std::vector<bool> taken(static_cast<std::size_t>(regions), false); // visited or touched
+  std::set<std::pair<int, int>> vertices_used;                       // (x, y) of grid vertices
+  std::vector<Cell> cells{{static_cast<int>(random.below(static_cast<std::uint64_t>(m))),
+                           static_cast<int>(random.below(static_cast<std::uint64_t>(m)))}};
+  taken[id(cells[0])] = true;
+  GridPathCurve out{mc::Curve::polyline({{0, 0}, {1, 1}}), Rational(1), {}, {}, 0, 0};
+  std::vector<RationalPoint> vertices{inside(cells[0], random)};
+
+  static constexpr std::array<std::pair<int, int>, 8> steps{
+      {{0, 1}, {1, 0}, {0, -1}, {-1, 0}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}}};
+  while (cells.size() < length) {
+    const Cell here = cells.back();
+    std::vector<std::pair<Cell, int>> moves; // the next cell, and the third region a diagonal
+                                             // step's vertex belongs to (-1: none)
+    for (const auto& [drow, dcol] : steps) {
+      const Cell next{here.row + drow, here.col + dcol};
+      if (!on_grid(next) || taken[id(next)])
+        continue;
+      if (drow == 0 || dcol == 0) {
+        moves.emplace_back(next, -1);
+        continue;
+      }
+      const int vx = std::max(here.col, next.col), vy = std::max(here.row, next.row);
+      if (vertices_used.count({vx, vy}))
+        continue;
+      // The vertex belongs to the region south-east of it (curve_local.hpp).
+      const Cell owner{vy, vx};
+      const bool third = !(owner.row == here.row && owner.col == here.col) &&
+                         !(owner.row == next.row && owner.col == next.col);
+      if (third && on_grid(owner) && taken[id(owner)])
+        continue; // the curve would meet that region a second time
+      moves.emplace_back(next, third && on_grid(owner) ? static_cast<int>(id(owner)) : -1);
+    }
+    if (moves.empty())
+      break;
+    const auto& [next, touched] = moves[random.below(moves.size())];
+    vertices.push_back(crossing(here, next, random));
+    if (next.row != here.row && next.col != here.col) {
+      ++out.vertex_steps;
+      vertices_used.insert({std::max(here.col, next.col), std::max(here.row, next.row)});
+    }
+    if (touched >= 0)
+      taken[static_cast<std::size_t>(touched)] = true;
+    taken[id(next)] = true;
+    cells.push_back(next);
+    vertices.push_back(inside(next, random));
+  }
+  if (cells.size() == 1) { // a curve inside one region: a second point there
+    RationalPoint end = inside(cells[0], random);
+    while (end == vertices[0])
+      end = inside(cells[0], random);
+    vertices.push_back(end);
+  }
+
+  // Rows left and entered again: a row whose regions on the path are not consecutive.
+  std::vector<int> last_seen(static_cast<std::size_t>(m), -1);
+  std::vector<bool> counted(static_cast<std::size_t>(m), false);
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    auto& last = last_seen[static_cast<std::size_t>(cells[i].row)];
+    if (last >= 0 && static_cast<std::size_t>(last) + 1 != i &&
+        !counted[static_cast<std::size_t>(cells[i].row)]) {
+      counted[static_cast<std::size_t>(cells[i].row)] = true;
+      ++out.rows_reentered;
+    }
+    last = static_cast<int>(i);
+  }
+
+  static const std::array<Rational, 5> sigmas{Rational(1), Rational(1, 2), Rational(1, 3),
+                                              Rational(1, 4), Rational(1, 8)};
+  out.sigma = sigmas[random.below(sigmas.size())];
+  out.curve = mc::Curve::polyline(std::move(vertices));
+  const mc::CurveOnGrid on_grid_curve(out.curve, mc::GridTiling(m, mc::Neighbourhood::four),
+                                      out.sigma);
+  for (const Cell& c : cells)
+    out.path.push_back(id(c));
+  out.q.assign(on_grid_curve.q().begin(), on_grid_curve.q().end());
+  return out;
+}
+
+} // namespace proofs
