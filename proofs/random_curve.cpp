@@ -38,6 +38,71 @@ RationalPoint crossing(const Cell& from, const Cell& to, SplitMix64& random) {
   return {Rational(std::max(from.col, to.col)), Rational(std::max(from.row, to.row))};
 }
 
+// P_0, X_0, P_1, X_1, …, P_L: straight from each point to the next (a one-region path: its
+// two points).
+std::vector<RationalPoint> straight_route(const std::vector<RationalPoint>& interior,
+                                          const std::vector<RationalPoint>& crossings) {
+  std::vector<RationalPoint> out{interior[0]};
+  for (std::size_t i = 0; i < crossings.size(); ++i) {
+    out.push_back(crossings[i]);
+    out.push_back(interior[i + 1]);
+  }
+  if (crossings.empty())
+    out.push_back(interior[1]);
+  return out;
+}
+
+bool whole(const Rational& r) {
+  return denominator(r) == 1;
+}
+
+// From a to b inside one region with axis-parallel segments, so that every length is
+// rational (positions need exact arc lengths). A point on a vertical side is left or
+// reached horizontally, one on a horizontal side vertically, an inner point either way;
+// `inner` (a point strictly inside) places the middle leg when a and b lie on opposite
+// sides. Every corner is strictly inside the region (one coordinate of an inner lattice
+// point or a side's inner point each), so the route meets no other region.
+void route(std::vector<RationalPoint>& out, const RationalPoint& a, const RationalPoint& b,
+           const RationalPoint& inner) {
+  const auto add = [&out](const RationalPoint& p) {
+    if (out.empty() || !(out.back() == p))
+      out.push_back(p);
+  };
+  add(a);
+  if (a.x != b.x && a.y != b.y) {
+    const bool a_horizontal = whole(a.x), b_horizontal = whole(b.x); // on a vertical side
+    const bool a_vertical = whole(a.y), b_vertical = whole(b.y);     // on a horizontal side
+    if (a_horizontal && b_horizontal) {
+      add({inner.x, a.y});
+      add({inner.x, b.y});
+    } else if (a_vertical && b_vertical) {
+      add({a.x, inner.y});
+      add({b.x, inner.y});
+    } else if (a_horizontal || b_vertical) {
+      add({b.x, a.y});
+    } else {
+      add({a.x, b.y});
+    }
+  }
+  add(b);
+}
+
+// The same points joined by axis-parallel legs: P_0 to X_0, X_(i−1) to X_i through region
+// r_i (its P_i placing the middle leg), X_(L−1) to P_L.
+std::vector<RationalPoint> axis_parallel_route(const std::vector<RationalPoint>& interior,
+                                               const std::vector<RationalPoint>& crossings) {
+  std::vector<RationalPoint> out;
+  if (crossings.empty()) {
+    route(out, interior[0], interior[1], interior[0]);
+    return out;
+  }
+  route(out, interior[0], crossings[0], interior[0]);
+  for (std::size_t i = 1; i < crossings.size(); ++i)
+    route(out, crossings[i - 1], crossings[i], interior[i]);
+  route(out, crossings.back(), interior.back(), interior.back());
+  return out;
+}
+
 } // namespace
 
 std::string GridPathCurve::describe() const {
@@ -59,7 +124,7 @@ std::string GridPathCurve::describe() const {
   return out + ", sigma = " + mc::to_string(sigma);
 }
 
-GridPathCurve random_grid_path(int m, SplitMix64& random) {
+GridPathCurve random_grid_path(int m, SplitMix64& random, GridPathShape shape_of_path) {
   if (m < 1)
     throw std::invalid_argument("random_grid_path: m must be >= 1, not " + std::to_string(m));
   const auto regions = static_cast<std::uint64_t>(m) * static_cast<std::uint64_t>(m);
@@ -79,7 +144,8 @@ GridPathCurve random_grid_path(int m, SplitMix64& random) {
                            static_cast<int>(random.below(static_cast<std::uint64_t>(m)))}};
   taken[id(cells[0])] = true;
   GridPathCurve out{mc::Curve::polyline({{0, 0}, {1, 1}}), Rational(1), {}, {}, 0, 0};
-  std::vector<RationalPoint> vertices{inside(cells[0], random)};
+  std::vector<RationalPoint> interior{inside(cells[0], random)}; // P_i of region r_i
+  std::vector<RationalPoint> crossings;                          // X_i between r_i and r_(i+1)
 
   static constexpr std::array<std::pair<int, int>, 8> steps{
       {{0, 1}, {1, 0}, {0, -1}, {-1, 0}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}}};
@@ -95,6 +161,8 @@ GridPathCurve random_grid_path(int m, SplitMix64& random) {
         moves.emplace_back(next, -1);
         continue;
       }
+      if (shape_of_path.axis_parallel)
+        continue; // a diagonal step needs a diagonal segment
       const int vx = std::max(here.col, next.col), vy = std::max(here.row, next.row);
       if (vertices_used.count({vx, vy}))
         continue;
@@ -109,7 +177,7 @@ GridPathCurve random_grid_path(int m, SplitMix64& random) {
     if (moves.empty())
       break;
     const auto& [next, touched] = moves[random.below(moves.size())];
-    vertices.push_back(crossing(here, next, random));
+    crossings.push_back(crossing(here, next, random));
     if (next.row != here.row && next.col != here.col) {
       ++out.vertex_steps;
       vertices_used.insert({std::max(here.col, next.col), std::max(here.row, next.row)});
@@ -118,14 +186,17 @@ GridPathCurve random_grid_path(int m, SplitMix64& random) {
       taken[static_cast<std::size_t>(touched)] = true;
     taken[id(next)] = true;
     cells.push_back(next);
-    vertices.push_back(inside(next, random));
+    interior.push_back(inside(next, random));
   }
   if (cells.size() == 1) { // a curve inside one region: a second point there
     RationalPoint end = inside(cells[0], random);
-    while (end == vertices[0])
+    while (end == interior[0])
       end = inside(cells[0], random);
-    vertices.push_back(end);
+    interior.push_back(end);
   }
+  std::vector<RationalPoint> vertices = shape_of_path.axis_parallel
+                                            ? axis_parallel_route(interior, crossings)
+                                            : straight_route(interior, crossings);
 
   // Rows left and entered again: a row whose regions on the path are not consecutive.
   std::vector<int> last_seen(static_cast<std::size_t>(m), -1);

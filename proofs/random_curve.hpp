@@ -42,10 +42,18 @@ struct GridPathCurve {
   std::string describe() const;
 };
 
+// How a path is drawn. axis_parallel: only steps to the 4-neighbours, and inside each region
+// legs parallel to the axes (entry, a corner or two, exit) instead of the straight legs
+// through an inner point: every length is then rational, as positions need
+// (models/mc/exact_local_curve.hpp).
+struct GridPathShape {
+  bool axis_parallel = false;
+};
+
 // A random simple grid path on the m×m grid (m >= 1) and its q. Its length is drawn from
 // three shapes (each a third of the draws): short (1..m regions), medium (up to m²/2) and
 // as long as the walk goes (up to m²); a walk that runs into its own trail stops there.
 // Deterministic in `random`'s state.
-GridPathCurve random_grid_path(int m, SplitMix64& random);
+GridPathCurve random_grid_path(int m, SplitMix64& random, GridPathShape shape = {});
 
 } // namespace proofs

@@ -9,6 +9,7 @@
 
 #include "models/mc/spacing.hpp"
 #include "proofs/lemma_6_7.hpp"
+#include "proofs/random_curve.hpp"
 #include "proofs/witness_json.hpp"
 #include "support/text.hpp"
 
@@ -389,6 +390,8 @@ std::string PositionalFamily::describe() const {
     for (const NamedCurve& c :
          given_curve ? std::vector<NamedCurve>{*given_curve} : positional_curves(m))
       names.push_back(c.name);
+    if (samples > 0 && !given_curve && m >= 2 && random_curves > 0)
+      names.push_back(std::to_string(random_curves) + " random grid paths");
     parts.push_back(std::to_string(m) + " (" + join(names) + ")");
   }
   std::vector<std::string> n, k, r1, r2, mem;
@@ -458,6 +461,14 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
   for (int m : sides)
     curves_by_side.push_back(positions.given_curve ? std::vector<NamedCurve>{*positions.given_curve}
                                                    : positional_curves(m));
+  if (positions.samples > 0 && !positions.given_curve) {
+    SplitMix64 shapes(positions.seed ^ 0x6a09e667f3bcc908ULL); // apart from the robots' draws
+    for (std::size_t s = 0; s < sides.size(); ++s)
+      for (std::size_t i = 0; sides[s] >= 2 && i < positions.random_curves; ++i) {
+        const GridPathCurve path = random_grid_path(sides[s], shapes, {.axis_parallel = true});
+        curves_by_side[s].push_back({path.describe(), path.curve});
+      }
+  }
   std::vector<PositionSetting> settings;
   for (std::size_t s = 0; s < sides.size(); ++s)
     for (mc::Neighbourhood nbh : positions.neighbourhoods) {

@@ -81,6 +81,10 @@ struct PositionalFamily {
   std::uint64_t samples = 0;
   std::uint64_t seed = 1;
   RobotCount sample_max_count = 12;
+  // With samples > 0: this many random grid paths per side m >= 2 beside the named curves,
+  // drawn from the seed (axis-parallel legs, so that positions are exact;
+  // proofs/random_curve.hpp).
+  std::size_t random_curves = 3;
   // Set: this curve instead of positional_curves(m); `sides` must be its side alone.
   std::optional<NamedCurve> given_curve;
   // Non-empty: part (2) is not checked, for this reason (a curve given as q alone has no

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <set>
 
+#include "models/mc/exact_local_curve.hpp"
 #include "proofs/random_curve.hpp"
 
 using namespace proofs;
@@ -75,5 +76,21 @@ TEST_CASE("random grid paths are the same for the same seed") {
     REQUIRE(x.q == y.q);
     REQUIRE(x.path == y.path);
     REQUIRE(x.describe() == y.describe());
+  }
+}
+
+TEST_CASE("axis-parallel grid paths have rational lengths, so positions can use them") {
+  SplitMix64 random(11);
+  for (int draw = 0; draw < 200; ++draw) {
+    const int m = 1 + static_cast<int>(random.below(6));
+    const GridPathCurve path = random_grid_path(m, random, {.axis_parallel = true});
+    CHECK(path.vertex_steps == 0);
+    const auto& vertices = std::get<mc::Polyline>(path.curve.components()[0]).vertices;
+    for (std::size_t i = 1; i < vertices.size(); ++i)
+      REQUIRE((vertices[i].x == vertices[i - 1].x || vertices[i].y == vertices[i - 1].y));
+    // Exact arc lengths: the positions' curve accepts it, with the same q.
+    const mc::ExactCurve exact(path.curve, mc::GridTiling(m, mc::Neighbourhood::four), path.sigma);
+    for (mc::RegionId u = 0; u < path.q.size(); ++u)
+      REQUIRE(exact.local(u).q == path.q[u]);
   }
 }
