@@ -72,6 +72,21 @@ Checked check(const SimulateRequest& request) {
     throw UsageError("--sigma: " + mc::to_string(c.setup.sigma) +
                      " is not positive (it is in units of the region side b = 1)");
   c.setup.neighbourhood = request.nbh == 8 ? mc::Neighbourhood::eight : mc::Neighbourhood::four;
+  mc::CurveSizes& sizes = c.setup.sizes;
+  sizes.rect_width = rational_option("--rect-size", request.rect_size.at(0));
+  sizes.rect_height = rational_option("--rect-size", request.rect_size.at(1));
+  sizes.rect_inset = rational_option("--rect-inset", request.rect_inset);
+  sizes.ring_inner = rational_option("--ring-radii", request.ring_radii.at(0));
+  sizes.ring_outer = rational_option("--ring-radii", request.ring_radii.at(1));
+  if (const auto why = sizes.invalid())
+    throw UsageError("curve sizes: " + *why);
+  // A rectangle that does not fit the smallest grid of the sweep: say so before running.
+  for (const std::string& curve : c.curves)
+    try {
+      (void)mc::simulation_curve(curve, request.m_from, mc::Rational(1), sizes);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string(e.what()) + " (m = " + std::to_string(request.m_from) + ")");
+    }
   c.setup.max_rounds = static_cast<std::size_t>(request.max_rounds);
   c.dominance = rational_option("--dominance", request.dominance);
   if (c.dominance <= 0 || c.dominance > 1)
@@ -92,6 +107,13 @@ std::string setup_line(const mc::SimulationSetup& setup) {
                      "rho2 = {}, {}-neighbourhood",
                      setup.e, setup.robots, mc::to_string(setup.sigma), mc::to_string(setup.rho2),
                      static_cast<int>(setup.neighbourhood));
+}
+
+// Which numbers are the paper's and which are ours (seed 002 §VII gives m = 10..20, e = 5,
+// 100 000 robots from one corner, and the three shapes, nothing else).
+std::string choices_line(const mc::SimulationSetup& setup) {
+  return "our choices (the paper gives none): sigma, rho2 and the curves' sizes: " +
+         setup.sizes.describe();
 }
 
 // A one-line progress report on stderr, redrawn in place: only on a terminal, and only
@@ -145,7 +167,7 @@ std::vector<std::string> write_files(const std::filesystem::path& dir,
     written.push_back((dir / name).string());
   };
   write("simulation.csv", mc::simulation_csv(results));
-  write("fig9.svg", mc::fig9_svg(results, setup_line(setup)));
+  write("fig9.svg", mc::fig9_svg(results, setup_line(setup) + "; " + setup.sizes.describe()));
   for (const mc::SimulationResult& r : results)
     if (!r.snapshots.empty())
       write(fmt::format("fig8-{}-m{}.svg", r.curve, r.m),
@@ -162,6 +184,7 @@ void print_text(const Checked& c, const std::vector<mc::SimulationResult>& resul
                 const std::optional<mc::DominanceCheck>& claim,
                 const std::vector<std::string>& files) {
   std::cout << "seed 002 §VII at round level: " << setup_line(c.setup) << '\n';
+  std::cout << choices_line(c.setup) << '\n';
   std::cout << fmt::format("{:>3}  {:<5} {:>9} {:>7} {:>7} {:>7} {:>12} {:>9} {:>8}\n", "m",
                            "curve", "robots", "T_out", "T_stab", "rounds", "T_out/T_stab",
                            "off curve", "seconds");
@@ -227,7 +250,13 @@ void print_json(const Checked& c, const std::vector<mc::SimulationResult>& resul
                    {"rho2", mc::to_string(c.setup.rho2)},
                    {"sigma", mc::to_string(c.setup.sigma)},
                    {"b", 1},
-                   {"nbh", static_cast<int>(c.setup.neighbourhood)}};
+                   {"nbh", static_cast<int>(c.setup.neighbourhood)},
+                   {"curve_sizes",
+                    {{"rect_width", mc::to_string(c.setup.sizes.rect_width)},
+                     {"rect_height", mc::to_string(c.setup.sizes.rect_height)},
+                     {"rect_inset", mc::to_string(c.setup.sizes.rect_inset)},
+                     {"ring_inner", mc::to_string(c.setup.sizes.ring_inner)},
+                     {"ring_outer", mc::to_string(c.setup.sizes.ring_outer)}}}};
   Json rows = Json::array();
   for (const mc::SimulationResult& r : results)
     rows.push_back({{"m", r.m},
@@ -282,6 +311,24 @@ void add_simulate_options(CLI::App& command, SimulateRequest& request) {
       ->type_name("LIST")
       ->delimiter(',')
       ->allow_extra_args(false);
+  command
+      .add_option("--rect-size", request.rect_size,
+                  "C1 and C2: width and height as fractions of m, each side floor(fraction * m) "
+                  "regions (default 1/3,1/3; our choice, the paper gives none)")
+      ->type_name("W,H")
+      ->expected(2)
+      ->delimiter(',');
+  command
+      .add_option("--rect-inset", request.rect_inset,
+                  "C1 and C2: how far in from the corner's two sides, in units of b "
+                  "(default 1/2: along the middle of a row of regions)")
+      ->type_name("I");
+  command
+      .add_option("--ring-radii", request.ring_radii,
+                  "C3: the inner and outer radius as fractions of m b (default 1/8,1/4)")
+      ->type_name("R1,R2")
+      ->expected(2)
+      ->delimiter(',');
   command.add_option("--robots", request.robots, "robots, all starting in region (m-1, m-1)")
       ->type_name("N")
       ->check(CLI::Range(std::int64_t{1}, std::int64_t{1'000'000'000'000}));

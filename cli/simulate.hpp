@@ -23,6 +23,10 @@ struct SimulateRequest {
   std::int64_t e = 5;
   std::string rho2 = "9/10";
   std::string sigma = "1/4";
+  // The sizes of C1–C3 (models/mc/curve_simulation.hpp): our choice, the paper gives none.
+  std::vector<std::string> rect_size{"1/3", "1/3"};  // C1, C2: width, height as fractions of m
+  std::string rect_inset = "1/2";                    // C1, C2: from the corner, units of b
+  std::vector<std::string> ring_radii{"1/8", "1/4"}; // C3: inner, outer as fractions of m b
   int nbh = 4;
   std::optional<int> fig8_m; // default: 10 when in the range, else m_from
   std::string dominance = "9/10";

@@ -60,7 +60,8 @@ SimulationCase prepare_case(int m, std::string_view curve, const SimulationSetup
   instance.m = m;
   instance.curve = canonical_curve_name(curve);
   const GridTiling tiling(m, setup.neighbourhood);
-  const CurveOnGrid gamma(simulation_curve(instance.curve, m), tiling, setup.sigma);
+  const CurveOnGrid gamma(simulation_curve(instance.curve, m, Rational(1), setup.sizes), tiling,
+                          setup.sigma);
   for (RegionId u = 0; u < gamma.size(); ++u)
     if (gamma.q(u) > max_quantised_length)
       throw std::invalid_argument(fmt::format(

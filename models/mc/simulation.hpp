@@ -24,6 +24,7 @@
 #include <string_view>
 #include <vector>
 
+#include "models/mc/curve_simulation.hpp"
 #include "models/mc/grid.hpp"
 #include "models/mc/rational.hpp"
 #include "models/mc/round.hpp"
@@ -38,6 +39,7 @@ struct SimulationSetup {
   Rational sigma{1, 4}; // the quantum of q, in units of b (b = 1); not given
   Neighbourhood neighbourhood = Neighbourhood::four;
   std::size_t max_rounds = 100'000; // RoundLimitReached beyond
+  CurveSizes sizes;                 // of C1, C2, C3; our choice, the paper gives none
 };
 
 // One (m, curve) instance, ready to run: the curve quantised on the grid.
