@@ -105,7 +105,8 @@ std::string describe_search(const FixpointSearchOptions& o) {
 
 } // namespace
 
-std::vector<FixpointSample> fixpoint_samples(const FixpointSearchOptions& options) {
+std::vector<FixpointSample> fixpoint_samples(const FixpointSearchOptions& options,
+                                             FamilyStop* stop) {
   if (options.min_side < 1 || options.max_side < options.min_side || options.max_count < 0 ||
       (options.curves.empty() && !options.given_curve) || options.ks.empty() ||
       options.rho2s.empty() || options.samples == 0)
@@ -114,21 +115,16 @@ std::vector<FixpointSample> fixpoint_samples(const FixpointSearchOptions& option
   SplitMix64 random(options.seed);
   std::vector<FixpointSample> samples;
   samples.reserve(options.samples);
-  for (std::uint64_t s = 0; s < options.samples; ++s) {
+  for (std::uint64_t s = 0; s < options.samples && (!stop || stop->go_on()); ++s) {
     FixpointSample sample;
     Setting& setting = sample.setting;
-    setting.m = options.given_curve
-                    ? options.given_curve->m
-                    : options.min_side + static_cast<int>(random.below(static_cast<std::uint64_t>(
-                                             options.max_side - options.min_side + 1)));
+    SampleCurve drawn = draw_sample_curve(options.given_curve, options.grid_paths, options.min_side,
+                                          options.max_side, random);
+    setting.m = drawn.m;
     setting.neighbourhood = options.neighbourhood;
-    if (options.given_curve) {
-      setting.curve = options.given_curve->name;
-      setting.q = options.given_curve->q;
-    } else if (options.grid_paths && random.below(3) == 0) {
-      const GridPathCurve path = random_grid_path(setting.m, random);
-      setting.curve = path.describe();
-      setting.q = path.q;
+    if (!drawn.name.empty()) {
+      setting.curve = std::move(drawn.name);
+      setting.q = std::move(drawn.q);
     } else {
       setting.curve = options.curves[random.below(options.curves.size())];
       setting.q = curve_q(setting.curve, setting.m);
@@ -170,7 +166,8 @@ BoundWitness shrink_fixpoint(const FixpointLemma& lemma, std::size_t claim,
 
 FixpointCheck search_fixpoint(const FixpointLemma& lemma, const FixpointSearchOptions& options) {
   const auto began = Clock::now();
-  const std::vector<FixpointSample> samples = fixpoint_samples(options);
+  FamilyStop stop(options.limits);
+  const std::vector<FixpointSample> samples = fixpoint_samples(options, &stop);
 
   std::vector<BoundTally> tallies;
   for (const BoundClaim& c : lemma.claims)
@@ -180,7 +177,6 @@ FixpointCheck search_fixpoint(const FixpointLemma& lemma, const FixpointSearchOp
   // between threads, then merged in sample order.
   constexpr std::size_t block = 256;
   std::vector<SampleRun> runs;
-  FamilyStop stop(options.limits);
   std::uint64_t done = 0;
   for (std::size_t first = 0; first < samples.size() && !stop.stopped(); first += block) {
     const std::size_t last = std::min(samples.size(), first + block);

@@ -57,7 +57,10 @@ struct FixpointSample {
 // The samples of a search, in order (what search_fixpoint runs). Throws
 // std::invalid_argument on min_side < 1, max_side < min_side, max_count < 0, an empty list
 // of curves, k or ρ2, an unknown curve or no sample.
-std::vector<FixpointSample> fixpoint_samples(const FixpointSearchOptions& options);
+// With `stop`: drawing ends early when it says so (the samples drawn so far are returned),
+// so that the limits hold while a large search is drawn.
+std::vector<FixpointSample> fixpoint_samples(const FixpointSearchOptions& options,
+                                             FamilyStop* stop = nullptr);
 
 // The search: every sample run to its fixed point and measured; the smallest violation of
 // each claim (fewest robots, then the smaller grid, then the first sample) shrunk. The

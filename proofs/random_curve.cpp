@@ -1,10 +1,11 @@
 #include "proofs/random_curve.hpp"
 
 #include <array>
+#include <cmath>
 #include <set>
 #include <utility>
 
-#include "models/mc/curve_local.hpp"
+#include "models/mc/curve_numbers.hpp"
 #include "models/mc/grid.hpp"
 
 namespace proofs {
@@ -38,17 +39,18 @@ RationalPoint crossing(const Cell& from, const Cell& to, SplitMix64& random) {
   return {Rational(std::max(from.col, to.col)), Rational(std::max(from.row, to.row))};
 }
 
-// P_0, X_0, P_1, X_1, …, P_L: straight from each point to the next (a one-region path: its
-// two points).
-std::vector<RationalPoint> straight_route(const std::vector<RationalPoint>& interior,
-                                          const std::vector<RationalPoint>& crossings) {
-  std::vector<RationalPoint> out{interior[0]};
-  for (std::size_t i = 0; i < crossings.size(); ++i) {
-    out.push_back(crossings[i]);
-    out.push_back(interior[i + 1]);
-  }
+// The piece of the path in each region, as the points it runs through: P_0 to X_0, X_(i−1)
+// to X_i through region r_i, X_(L−1) to P_L (a one-region path: its two points). Straight:
+// through the region's inner point P_i.
+std::vector<std::vector<RationalPoint>>
+straight_pieces(const std::vector<RationalPoint>& interior,
+                const std::vector<RationalPoint>& crossings) {
   if (crossings.empty())
-    out.push_back(interior[1]);
+    return {{interior[0], interior[1]}};
+  std::vector<std::vector<RationalPoint>> out{{interior[0], crossings[0]}};
+  for (std::size_t i = 1; i < crossings.size(); ++i)
+    out.push_back({crossings[i - 1], interior[i], crossings[i]});
+  out.push_back({crossings.back(), interior.back()});
   return out;
 }
 
@@ -87,23 +89,65 @@ void route(std::vector<RationalPoint>& out, const RationalPoint& a, const Ration
   add(b);
 }
 
-// The same points joined by axis-parallel legs: P_0 to X_0, X_(i−1) to X_i through region
-// r_i (its P_i placing the middle leg), X_(L−1) to P_L.
-std::vector<RationalPoint> axis_parallel_route(const std::vector<RationalPoint>& interior,
-                                               const std::vector<RationalPoint>& crossings) {
-  std::vector<RationalPoint> out;
+// The same pieces with legs parallel to the axes (route), each region's P_i placing its
+// middle leg.
+std::vector<std::vector<RationalPoint>>
+axis_parallel_pieces(const std::vector<RationalPoint>& interior,
+                     const std::vector<RationalPoint>& crossings) {
+  std::vector<std::vector<RationalPoint>> out(std::max<std::size_t>(1, crossings.size() + 1));
   if (crossings.empty()) {
-    route(out, interior[0], interior[1], interior[0]);
+    route(out[0], interior[0], interior[1], interior[0]);
     return out;
   }
-  route(out, interior[0], crossings[0], interior[0]);
+  route(out[0], interior[0], crossings[0], interior[0]);
   for (std::size_t i = 1; i < crossings.size(); ++i)
-    route(out, crossings[i - 1], crossings[i], interior[i]);
-  route(out, crossings.back(), interior.back(), interior.back());
+    route(out[i], crossings[i - 1], crossings[i], interior[i]);
+  route(out.back(), crossings.back(), interior.back(), interior.back());
   return out;
 }
 
+// Whether r + √a + √b ≤ c, exactly (r, a, b >= 0 rational): squaring twice, as every term
+// compared is then rational.
+bool at_most(const Rational& r, const Rational& a, const Rational& b, const Rational& c) {
+  const Rational d = c - r; // √a + √b ≤ d
+  if (d < 0)
+    return false;
+  const Rational e = d * d - a - b; // 2√(ab) ≤ e
+  return e >= 0 && 4 * a * b <= e * e;
+}
+
+// ⌈|piece| / σ⌉ exactly. A piece has at most two segments of irrational length (a straight
+// piece has two segments; the legs of an axis-parallel one are rational).
+mc::QuantisedLength quanta(const std::vector<RationalPoint>& piece, const Rational& sigma) {
+  Rational r = 0;
+  std::vector<Rational> surds;
+  double estimate = 0;
+  for (std::size_t j = 1; j < piece.size(); ++j) {
+    const Rational dx = piece[j].x - piece[j - 1].x, dy = piece[j].y - piece[j - 1].y;
+    const Rational squared = dx * dx + dy * dy;
+    estimate += std::sqrt(static_cast<double>(squared));
+    if (const auto root = mc::exact::sqrt_if_square(squared))
+      r += *root;
+    else
+      surds.push_back(squared);
+  }
+  if (surds.size() > 2)
+    throw std::logic_error("random_grid_path: a piece with more than two oblique segments");
+  surds.resize(2, Rational(0));
+  // The smallest n with length ≤ n·σ, from the estimate.
+  auto n = static_cast<mc::QuantisedLength>(std::ceil(estimate / static_cast<double>(sigma)));
+  while (!at_most(r, surds[0], surds[1], n * sigma))
+    ++n;
+  while (n > 0 && at_most(r, surds[0], surds[1], (n - 1) * sigma))
+    --n;
+  return n;
+}
+
 } // namespace
+
+mc::Curve GridPathCurve::curve() const {
+  return mc::Curve::polyline(vertices);
+}
 
 std::string GridPathCurve::describe() const {
   std::string out = "a grid path through " + std::to_string(path.size()) + " region" +
@@ -143,7 +187,7 @@ GridPathCurve random_grid_path(int m, SplitMix64& random, GridPathShape shape_of
   std::vector<Cell> cells{{static_cast<int>(random.below(static_cast<std::uint64_t>(m))),
                            static_cast<int>(random.below(static_cast<std::uint64_t>(m)))}};
   taken[id(cells[0])] = true;
-  GridPathCurve out{mc::Curve::polyline({{0, 0}, {1, 1}}), Rational(1), {}, {}, 0, 0};
+  GridPathCurve out;
   std::vector<RationalPoint> interior{inside(cells[0], random)}; // P_i of region r_i
   std::vector<RationalPoint> crossings;                          // X_i between r_i and r_(i+1)
 
@@ -194,9 +238,13 @@ GridPathCurve random_grid_path(int m, SplitMix64& random, GridPathShape shape_of
       end = inside(cells[0], random);
     interior.push_back(end);
   }
-  std::vector<RationalPoint> vertices = shape_of_path.axis_parallel
-                                            ? axis_parallel_route(interior, crossings)
-                                            : straight_route(interior, crossings);
+  const std::vector<std::vector<RationalPoint>> pieces =
+      shape_of_path.axis_parallel ? axis_parallel_pieces(interior, crossings)
+                                  : straight_pieces(interior, crossings);
+  for (const auto& piece : pieces)
+    for (const RationalPoint& p : piece)
+      if (out.vertices.empty() || !(out.vertices.back() == p))
+        out.vertices.push_back(p);
 
   // Rows left and entered again: a row whose regions on the path are not consecutive.
   std::vector<int> last_seen(static_cast<std::size_t>(m), -1);
@@ -214,12 +262,28 @@ GridPathCurve random_grid_path(int m, SplitMix64& random, GridPathShape shape_of
   static const std::array<Rational, 5> sigmas{Rational(1), Rational(1, 2), Rational(1, 3),
                                               Rational(1, 4), Rational(1, 8)};
   out.sigma = sigmas[random.below(sigmas.size())];
-  out.curve = mc::Curve::polyline(std::move(vertices));
-  const mc::CurveOnGrid on_grid_curve(out.curve, mc::GridTiling(m, mc::Neighbourhood::four),
-                                      out.sigma);
-  for (const Cell& c : cells)
-    out.path.push_back(id(c));
-  out.q.assign(on_grid_curve.q().begin(), on_grid_curve.q().end());
+  // q_u = ⌈|A_u|/σ⌉ (curve_local.hpp): a point owned by another region adds no length, so
+  // A_u is the piece in u, and a region the path does not run through has q = 0.
+  out.q.assign(static_cast<std::size_t>(regions), 0);
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    out.path.push_back(id(cells[i]));
+    out.q[id(cells[i])] = quanta(pieces[i], out.sigma);
+  }
+  return out;
+}
+
+SampleCurve draw_sample_curve(const std::optional<GivenCurve>& given, bool grid_paths, int min_side,
+                              int max_side, SplitMix64& random) {
+  if (given)
+    return {given->m, given->name, given->q};
+  SampleCurve out;
+  out.m = min_side +
+          static_cast<int>(random.below(static_cast<std::uint64_t>(max_side - min_side + 1)));
+  if (grid_paths && random.below(3) == 0) {
+    GridPathCurve path = random_grid_path(out.m, random);
+    out.name = path.describe();
+    out.q = std::move(path.q);
+  }
   return out;
 }
 

@@ -18,26 +18,34 @@
 // third region (the anti-diagonal steps) makes that region's A_u the single vertex (q = 0),
 // and the path never enters that region afterwards.
 //
-// q_u = ⌈|A_u|/σ⌉ is computed by mc::CurveOnGrid, exactly or certified, with σ drawn from
+// q_u = ⌈|A_u|/σ⌉ is computed exactly in rationals (a piece has at most two segments of
+// irrational length, and r + √a + √b ≤ c is decided by squaring twice), with σ drawn from
 // {1, 1/2, 1/3, 1/4, 1/8} (units of b): pieces of about 1/4 to 2 give q from 1 to about 16.
+// mc::CurveOnGrid computes the same q (random_curve_test.cpp checks it); it is not used
+// here because its certified 100-digit arithmetic takes milliseconds a path, and a search
+// draws thousands.
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "models/mc/curve.hpp"
 #include "models/mc/round.hpp"
+#include "proofs/family.hpp"
 #include "proofs/split_mix64.hpp"
 
 namespace proofs {
 
 struct GridPathCurve {
-  mc::Curve curve;                    // the polyline
-  mc::Rational sigma;                 // σ, in units of the region side b = 1
-  std::vector<mc::RegionId> path;     // r_0 … r_L
-  std::vector<mc::QuantisedLength> q; // q_u / σ by RegionId
-  std::size_t vertex_steps = 0;       // diagonal steps, through a grid vertex
-  std::size_t rows_reentered = 0;     // rows the path leaves and later enters again
+  std::vector<mc::RationalPoint> vertices; // the polyline
+  mc::Rational sigma;                      // σ, in units of the region side b = 1
+  std::vector<mc::RegionId> path;          // r_0 … r_L
+  std::vector<mc::QuantisedLength> q;      // q_u / σ by RegionId
+  std::size_t vertex_steps = 0;            // diagonal steps, through a grid vertex
+  std::size_t rows_reentered = 0;          // rows the path leaves and later enters again
 
+  // The polyline as a curve (its checks of simplicity run here, not when q is computed).
+  mc::Curve curve() const;
   // "a grid path through 7 regions (2 steps through a vertex, re-enters 1 row), sigma = 1/4"
   std::string describe() const;
 };
@@ -55,5 +63,16 @@ struct GridPathShape {
 // as long as the walk goes (up to m²); a walk that runs into its own trail stops there.
 // Deterministic in `random`'s state.
 GridPathCurve random_grid_path(int m, SplitMix64& random, GridPathShape shape = {});
+
+// The grid side and the curve of one sample of a search (both searches draw them alike): the
+// given curve and its side; else m in min_side..max_side and, with grid_paths, a random grid
+// path a third of the time. An empty `name`: the caller draws one of its named curves.
+struct SampleCurve {
+  int m = 1;
+  std::string name;
+  std::vector<mc::QuantisedLength> q;
+};
+SampleCurve draw_sample_curve(const std::optional<GivenCurve>& given, bool grid_paths, int min_side,
+                              int max_side, SplitMix64& random);
 
 } // namespace proofs

@@ -554,19 +554,14 @@ LemmaCheck search_random(const RoundLemma& lemma, const SearchOptions& options) 
 
   for (std::uint64_t sample = 0; sample < options.samples && stop.next(); ++sample) {
     Setting setting;
-    setting.m = options.given_curve
-                    ? options.given_curve->m
-                    : options.min_side + static_cast<int>(random.below(static_cast<std::uint64_t>(
-                                             options.max_side - options.min_side + 1)));
+    SampleCurve drawn = draw_sample_curve(options.given_curve, options.grid_paths, options.min_side,
+                                          options.max_side, random);
+    setting.m = drawn.m;
     setting.neighbourhood = options.neighbourhood;
     const std::size_t regions = static_cast<std::size_t>(setting.m * setting.m);
-    if (options.given_curve) {
-      setting.curve = options.given_curve->name;
-      setting.q = options.given_curve->q;
-    } else if (options.grid_paths && random.below(3) == 0) {
-      const GridPathCurve path = random_grid_path(setting.m, random);
-      setting.curve = path.describe();
-      setting.q = path.q;
+    if (!drawn.name.empty()) {
+      setting.curve = std::move(drawn.name);
+      setting.q = std::move(drawn.q);
     } else {
       setting.curve = curves[random.below(curves.size())];
       if (setting.curve == "random") {

@@ -466,7 +466,7 @@ TheoremCheck check_theorem_6_9(const Family& count_family, const PositionalFamil
     for (std::size_t s = 0; s < sides.size(); ++s)
       for (std::size_t i = 0; sides[s] >= 2 && i < positions.random_curves; ++i) {
         const GridPathCurve path = random_grid_path(sides[s], shapes, {.axis_parallel = true});
-        curves_by_side[s].push_back({path.describe(), path.curve});
+        curves_by_side[s].push_back({path.describe(), path.curve()});
       }
   }
   std::vector<PositionSetting> settings;

@@ -8,6 +8,7 @@
 #include "models/mc/assign.hpp"
 #include "models/mc/curve_local.hpp"
 #include "models/mc/grid.hpp"
+#include "support/line_statements.hpp"
 #include "support/text.hpp"
 #include "support/text_file.hpp"
 
@@ -15,25 +16,10 @@ namespace mc {
 
 namespace {
 
-// What is wrong with one line; parse_curve_file adds the source and the line number.
-struct LineError {
-  std::string what;
-};
-
-std::string trim(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\r");
-  if (first == std::string::npos)
-    return "";
-  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
-}
-
-std::vector<std::string> words(const std::string& text) {
-  std::istringstream in(text);
-  std::vector<std::string> out;
-  for (std::string word; in >> word;)
-    out.push_back(word);
-  return out;
-}
+using support::LineError;
+using support::once;
+using support::trim;
+using support::words;
 
 std::int64_t whole_in(const std::string& what, const std::string& text, std::int64_t lo,
                       std::int64_t hi) {
@@ -87,13 +73,6 @@ struct Statements {
   Rational sigma = 1;
   std::vector<RationalPoint> vertices;
 };
-
-void once(std::optional<int>& seen, int line, const std::string& keyword) {
-  if (seen)
-    throw LineError{"a second " + keyword + " (the first is on line " + std::to_string(*seen) +
-                    ")"};
-  seen = line;
-}
 
 bool matrix_entry(const std::string& word) {
   return word == "." ||

@@ -7,34 +7,20 @@
 #include <stdexcept>
 #include <vector>
 
+#include "support/line_statements.hpp"
 #include "support/text_file.hpp"
 
 namespace path_reservation {
 
 namespace {
 
+using support::LineError;
+using support::once;
+using support::trim;
+using support::words;
+
 constexpr int max_side = 64;   // a plane holds at most 64 cells
 constexpr int max_range = 128; // twice the longest side: beyond it every robot hears all
-
-// What is wrong with one line; parse_scenario adds the file and the line number.
-struct LineError {
-  std::string what;
-};
-
-std::string trim(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\r");
-  if (first == std::string::npos)
-    return "";
-  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
-}
-
-std::vector<std::string> words(const std::string& text) {
-  std::istringstream in(text);
-  std::vector<std::string> out;
-  for (std::string word; in >> word;)
-    out.push_back(word);
-  return out;
-}
 
 std::optional<int> whole(const std::string& text) {
   int value = 0;
@@ -90,13 +76,6 @@ struct Statements {
   Scenario scenario;
   std::optional<int> name_line, description_line, plane_line, range_line;
 };
-
-void once(std::optional<int>& seen, int line, const std::string& keyword) {
-  if (seen)
-    throw LineError{"a second " + keyword + " (the first is on line " + std::to_string(*seen) +
-                    ")"};
-  seen = line;
-}
 
 void parse_line(const std::string& keyword, const std::string& rest, int line, Statements& s) {
   if (keyword == "name" || keyword == "description") {

@@ -93,8 +93,12 @@ def check_case(tool, case, failures):
         code, seconds, _, _, err = run_measured(tool, base_args + ["--max-seconds",
                                                                  str(case["seconds"])])
         lines.append(f"time {case['seconds']} s: {seconds:.1f} s, exit {code}")
-        if code != 3:
-            failures.append(f"{name(case)}: --max-seconds {case['seconds']} gave exit {code}, not 3")
+        # A violation found before the time is up is the right answer too (exit 1: lemma-6.4
+        # on a loaded machine may reach its counterexample within the second); what must
+        # not happen is "holds", another exit, or a run past the limit.
+        if code not in (1, 3):
+            failures.append(f"{name(case)}: --max-seconds {case['seconds']} gave exit {code}, "
+                            "not 3 (or 1)")
         if seconds > case["seconds"] + 1 + base_seconds:
             failures.append(f"{name(case)}: --max-seconds {case['seconds']}: ran {seconds:.1f} s "
                             f"(start {base_seconds:.1f} s), over the limit by more than 1 s")

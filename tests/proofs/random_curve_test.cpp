@@ -5,6 +5,7 @@
 #include <cmath>
 #include <set>
 
+#include "models/mc/curve_local.hpp"
 #include "models/mc/exact_local_curve.hpp"
 #include "proofs/random_curve.hpp"
 
@@ -36,8 +37,15 @@ TEST_CASE("random grid paths are simple paths whose q is the length in each regi
     }
     // Off the path: q = 0. On it: ⌈piece length / σ⌉ with the piece entry → inner point → exit,
     // the polyline's vertices 2i−1, 2i, 2i+1 (a one-region path: its two points).
-    const auto& vertices = std::get<mc::Polyline>(path.curve.components()[0]).vertices;
+    const auto& vertices = path.vertices;
     REQUIRE(vertices.size() == (path.path.size() == 1 ? 2 : 2 * path.path.size() - 1));
+    // A simple curve that meets each region in one piece, with the q of CurveOnGrid's
+    // certified arithmetic (on the first draws: it takes milliseconds a path).
+    if (draw < 150) {
+      const mc::CurveOnGrid on_grid(path.curve(), mc::GridTiling(m, mc::Neighbourhood::four),
+                                    path.sigma);
+      REQUIRE(std::vector<mc::QuantisedLength>(on_grid.q().begin(), on_grid.q().end()) == path.q);
+    }
     const double sigma = static_cast<double>(path.sigma);
     for (mc::RegionId u = 0; u < path.q.size(); ++u)
       if (!seen.count(u))
@@ -85,11 +93,12 @@ TEST_CASE("axis-parallel grid paths have rational lengths, so positions can use 
     const int m = 1 + static_cast<int>(random.below(6));
     const GridPathCurve path = random_grid_path(m, random, {.axis_parallel = true});
     CHECK(path.vertex_steps == 0);
-    const auto& vertices = std::get<mc::Polyline>(path.curve.components()[0]).vertices;
+    const auto& vertices = path.vertices;
     for (std::size_t i = 1; i < vertices.size(); ++i)
       REQUIRE((vertices[i].x == vertices[i - 1].x || vertices[i].y == vertices[i - 1].y));
     // Exact arc lengths: the positions' curve accepts it, with the same q.
-    const mc::ExactCurve exact(path.curve, mc::GridTiling(m, mc::Neighbourhood::four), path.sigma);
+    const mc::ExactCurve exact(path.curve(), mc::GridTiling(m, mc::Neighbourhood::four),
+                               path.sigma);
     for (mc::RegionId u = 0; u < path.q.size(); ++u)
       REQUIRE(exact.local(u).q == path.q[u]);
   }
