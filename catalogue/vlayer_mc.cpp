@@ -38,6 +38,7 @@ vlayer_mc::VlConfig vlayer_config(const ParamValues& p) {
   c.rho2 = p.at("rho2").rational();
   c.cn_repair = whole(p, "cn_repair") == 1;
   c.vn_repair = whole(p, "vn_repair") == 1;
+  c.owned_ends = whole(p, "owned_ends") == 1;
   c.filter_targets = whole(p, "filter_targets") == 1;
   return c;
 }
@@ -78,6 +79,9 @@ ModelDefinition vlayer_mc_definition() {
       catalogue::ParamSpec::change(
           "filter_targets", "1: a CN ignores a target-update that arrives outside its window "
                             "or that it cannot reach in the round (README D28, finding F5)"),
+      catalogue::ParamSpec::change(
+          "owned_ends", "1: calctarget's lines 35-36 aim at the ends of Gamma_u that region u "
+                        "owns; the paper's Gamma_u(sup P_u) lies in the next region (README D14)"),
       {"samples", 1000, 1, 1000000,
        "lemma-7.3/7.4, theorem-7.5: start states drawn from U(VLNodes) x R(env) when there are "
        "more than 2 000 000 of them"},

@@ -32,6 +32,12 @@ struct VlConfig {
   // that it could not reach in the round (Def 7.1(4b)). It hides what a too short round
   // breaks (F3); Lemma 7.3 needs it (F5).
   bool filter_targets = false;
+  // D14: calctarget's lines 35–36 send the first and last robot of seq to Γ_u(inf P_u) and
+  // Γ_u(sup P_u). Under half-open ownership sup P_u lies in the next region when u is not in
+  // the last column, so the robot sent there stands in the next region and reports to its
+  // VN. With owned_ends, P_u is the part of Γ_u that u owns (up to sup P_u − 1 on the
+  // lattice), for lines 33 and 35–38.
+  bool owned_ends = false;
 
   Lattice lattice() const { return Lattice(rows, cols, b, nbh); }
   // Phases (clock mod δ) at which VN_u sends its vn-update and computes the targets (D1).

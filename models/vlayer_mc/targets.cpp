@@ -40,7 +40,11 @@ std::vector<std::optional<Point>> compute_targets(const VlConfig& c, RegionId u,
       target[static_cast<std::size_t>(members[next++])] = lattice.centre(nbrs[i]); // line 31
 
   const bool on_curve_region = q[static_cast<std::size_t>(u)] != 0;
-  const int b = lattice.b(), inf = (u % lattice.cols()) * b, sup = inf + b, curve_y = b / 2;
+  // P_u = [inf, sup] on the lattice; with owned_ends (D14) only the points u owns: the
+  // next region owns x = sup unless u is in the last column.
+  const int b = lattice.b(), inf = (u % lattice.cols()) * b, curve_y = b / 2;
+  const bool last_column = u % lattice.cols() == lattice.cols() - 1;
+  const int sup = inf + b - (c.owned_ends && !last_column ? 1 : 0);
   std::vector<std::pair<int, int>> seq; // (x, id) of the staying robots on Γ_u (line 27)
   for (std::size_t i = next; i < members.size(); ++i) {
     const int p = members[i];

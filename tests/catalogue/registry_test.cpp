@@ -221,7 +221,8 @@ TEST_CASE("variant_name: paper by default, else the changes", "[models][registry
   for (const auto& p : vlayer.params)
     if (p.variant)
       variants.push_back(p.name);
-  CHECK(variants == std::vector<std::string>{"cn_repair", "vn_repair", "filter_targets"});
+  CHECK(variants ==
+        std::vector<std::string>{"cn_repair", "vn_repair", "filter_targets", "owned_ends"});
   CHECK(catalogue::variant_name(vlayer, catalogue::resolve_params(vlayer, {})) == "paper");
   CHECK(catalogue::variant_name(vlayer, catalogue::resolve_params(vlayer, {"rows=2"})) == "paper");
   CHECK(catalogue::variant_name(

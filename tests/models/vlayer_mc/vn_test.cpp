@@ -26,6 +26,17 @@ TEST_CASE("vlayer targets: calctarget on the lattice (Fig. 7 lines 26–38)", "[
   // assign: y = 3, neighbour 1 has 0: ⌊0.9·3/4⌋ = 0 robots move.
   CHECK(vlayer_mc::compute_targets(c, 0, {l.point(0, 1), l.point(1, 1), l.point(1, 1)}, {0}) ==
         Targets{l.point(0, 1), l.point(0, 1), l.point(2, 1)});
+  CHECK(l.region_of(l.point(2, 1)) == 1);
+  // owned_ends (D14): P_0 is the part region 0 owns, x ∈ [0, 1]: the last goes to x = 1, the
+  // middle 1 + ½((0 + 1)/2 − 1) = ¾ → 0; off Γ_0 beyond its end, the nearest owned point.
+  c.owned_ends = true;
+  CHECK(vlayer_mc::compute_targets(c, 0, {l.point(0, 1), l.point(1, 1), l.point(1, 1)}, {0}) ==
+        Targets{l.point(0, 1), l.point(0, 1), l.point(1, 1)});
+  CHECK(vlayer_mc::compute_targets(c, 0, {l.point(2, 2), {}, {}}, {0}) ==
+        Targets{l.point(1, 1), {}, {}});
+  // The last column owns its far side: unchanged there.
+  CHECK(vlayer_mc::compute_targets(c, 1, {l.point(2, 1), l.point(3, 1), l.point(3, 1)}, {0}) ==
+        Targets{l.point(2, 1), l.point(2, 1), l.point(4, 1)});
 }
 
 TEST_CASE("vlayer targets: the boundary reassigns to o_g (Fig. 7 lines 19–22, 31)", "[vlayer]") {
