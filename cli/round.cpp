@@ -110,14 +110,18 @@ void print_text(const mc::RoundConfig& config, const Outcome& outcome) {
 
 int command_round(const RoundRequest& request) {
   std::optional<mc::RoundConfig> config;
+  std::optional<mc::CurveFile> curve;
   try {
+    if (!request.curve_file.empty())
+      curve.emplace(mc::read_curve_file(request.curve_file));
+    const mc::CurveFile* given = curve ? &*curve : nullptr;
     if (request.config == "-") {
       // A round configuration is a grid and counts: 16 MiB is far more than any.
       std::istringstream in(
           support::read_text_stream(std::cin, "standard input", std::size_t{16} << 20));
-      config.emplace(mc::read_round_config(in, "-"));
+      config.emplace(mc::read_round_config(in, "-", given));
     } else {
-      config.emplace(mc::read_round_config_file(request.config));
+      config.emplace(mc::read_round_config_file(request.config, given));
     }
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
@@ -172,6 +176,11 @@ Command round_command() {
             command.add_option("--config", request->config, "the configuration file ('-': stdin)")
                 ->type_name("FILE")
                 ->required();
+            command
+                .add_option("--curve-file", request->curve_file,
+                            "a curve file (a q matrix or a polyline, models/mc/README.md) whose q "
+                            "replaces the configuration's, which may then leave q out")
+                ->type_name("FILE");
             command.add_flag("--json", request->json, "print one JSON object on stdout");
             command.add_flag("--to-fixpoint", request->to_fixpoint,
                              "every round to the fixed point, with T_out and T_stab");

@@ -15,7 +15,9 @@ namespace cli {
 constexpr int max_grid_side = mc::max_config_side;
 
 struct RoundRequest {
-  std::string config; // a file, or "-" for stdin
+  std::string config;     // a file, or "-" for stdin
+  std::string curve_file; // empty, or a curve file whose q replaces the config's
+                          // (models/mc/curve_file.hpp)
   bool json = false;
   bool to_fixpoint = false;
   std::size_t max_rounds = 100'000;

@@ -77,7 +77,7 @@ std::vector<std::int64_t> matrix(const Input& root, const std::string& source, c
 
 } // namespace
 
-RoundConfig read_round_config(std::istream& in, const std::string& source) {
+RoundConfig read_round_config(std::istream& in, const std::string& source, const CurveFile* curve) {
   Input root;
   try {
     root = Input::parse(in);
@@ -100,7 +100,15 @@ RoundConfig read_round_config(std::istream& in, const std::string& source) {
   params.k = whole(field(root, source, "k"), 1, max_robots, source, "k");
   params.rho1 = rational(root, source, "rho1");
   params.rho2 = rational(root, source, "rho2");
-  std::vector<QuantisedLength> q = matrix(root, source, "q", m, max_quantised_length);
+  std::vector<QuantisedLength> q;
+  if (curve) { // the curve file's q, in place of the field (which may be left out)
+    if (curve->m != m)
+      bad(source, "the curve file's grid is " + std::to_string(curve->m) + "x" +
+                      std::to_string(curve->m) + ", the configuration's m = " + std::to_string(m));
+    q.assign(curve->q.begin(), curve->q.end());
+  } else {
+    q = matrix(root, source, "q", m, max_quantised_length);
+  }
   Counts robots = matrix(root, source, "robots", m, max_robots);
   if (total(robots) > max_robots)
     bad(source, "more than " + std::to_string(max_robots) + " robots in all");
@@ -113,7 +121,7 @@ RoundConfig read_round_config(std::istream& in, const std::string& source) {
   }
 }
 
-RoundConfig read_round_config_file(const std::string& path) {
+RoundConfig read_round_config_file(const std::string& path, const CurveFile* curve) {
   // A round configuration is a grid and counts: 16 MiB is far more than any, and a device,
   // a directory or a binary file is refused before parsing (support/text_file.hpp).
   constexpr std::size_t max_config_bytes = 16 << 20;
@@ -124,7 +132,7 @@ RoundConfig read_round_config_file(const std::string& path) {
     throw std::invalid_argument("round config: " + std::string(e.what()));
   }
   std::istringstream in(text);
-  return read_round_config(in, support::printable(path));
+  return read_round_config(in, support::printable(path), curve);
 }
 
 std::string round_config_json(const RoundSystem& system, const Counts& robots) {

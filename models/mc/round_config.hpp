@@ -13,6 +13,7 @@
 #include <iosfwd>
 #include <string>
 
+#include "models/mc/curve_file.hpp"
 #include "models/mc/round.hpp"
 
 namespace mc {
@@ -27,10 +28,12 @@ struct RoundConfig {
 };
 
 // Throws std::invalid_argument with one line "round config '<source>': <what>", naming the
-// field, on anything wrong.
-RoundConfig read_round_config(std::istream& in, const std::string& source);
+// field, on anything wrong. With `curve` (a curve file, `round --curve-file`): its q instead
+// of the field "q", which may then be left out; its m must be the configuration's.
+RoundConfig read_round_config(std::istream& in, const std::string& source,
+                              const CurveFile* curve = nullptr);
 // The file `path` (at most 16 MiB, a text file), read as above.
-RoundConfig read_round_config_file(const std::string& path);
+RoundConfig read_round_config_file(const std::string& path, const CurveFile* curve = nullptr);
 
 // The configuration as a file that read_round_config reads back to it: one field a line,
 // each matrix row on one line.

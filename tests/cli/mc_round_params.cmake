@@ -101,3 +101,16 @@ cli_test(mc_round_config_and_m EXIT 2
 cli_test(mc_round_config_missing EXIT 2
          ARGS check mc-round -p config=${out}/no/such.json
          STDERR "^tioa-check: error: parameter config: round config: .*such.json: No such file" STDERR_LINES 1)
+
+# round --curve-file: the curve's q in place of the configuration's (which may leave it out).
+file(WRITE ${out}/no_q_config.json
+     "{\"m\": 4, \"nbh\": 4, \"k\": 1, \"rho1\": \"1/2\", \"rho2\": \"9/10\",\n"
+     " \"robots\": [[9, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]]}\n")
+cli_test(round_curve_file EXIT 0
+         ARGS round --config ${out}/no_q_config.json --curve-file ${out}/zigzag_q.txt --to-fixpoint --json
+         JSON "/T_stab=2" "/rounds/2/0/1=3")
+cli_test(round_curve_file_other_grid EXIT 2
+         ARGS round --config ${out}/one_config.json --curve-file ${out}/zigzag_q.txt
+         STDERR "^tioa-check: error: round config '.*one_config.json': the curve file's grid is 4x4, the configuration's m = 2\n$")
+cli_test(round_no_q EXIT 2 ARGS round --config ${out}/no_q_config.json
+         STDERR "missing field 'q'" STDERR_LINES 1)
