@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 
 #include "models/mc/curve_file.hpp"
 #include "models/mc/exact_local_curve.hpp"
@@ -411,9 +412,15 @@ ModelDefinition mc_round_definition() {
   };
   d.build = [](const ParamValues& p) {
     const RoundInstance instance = round_instance(p);
-    const mc::RoundAutomaton round =
-        instance.configuration ? mc::round_automaton(instance.system, *instance.configuration)
-                               : mc::round_automaton(instance.system, p.at("n").integer());
+    const mc::RoundAutomaton round = [&] {
+      if (!instance.configuration)
+        return mc::round_automaton(instance.system, p.at("n").integer());
+      try {
+        return mc::round_automaton(instance.system, *instance.configuration);
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("parameter config: ") + e.what());
+      }
+    }();
     auto sys = std::make_shared<const mc::RoundSystem>(instance.system);
     const auto y = round.y;
     const tioa::StatePredicate fixed = [sys, y](const tioa::State& s) {

@@ -6,6 +6,7 @@
 #include "proofs/lemma_7_6.hpp"
 #include "proofs/lemma_7_7.hpp"
 #include "proofs/theorem_7_5.hpp"
+#include "proofs/theorem_7_8.hpp"
 #include "proofs/vlayer_mc/legal_sets.hpp"
 #include "tioa/operators.hpp"
 
@@ -107,7 +108,10 @@ ModelDefinition vlayer_mc_definition() {
                       "eps_sample, directly and through Lemma 3.4"},
       {"lemma-7.6", "R_MC (seed 000 §7.3) is a simulation relation, on the pairs reached from "
                     "Lemma 7.7's pairs"},
-      {"lemma-7.7", "every state of the reset family is R_MC-related to a reachable state"}};
+      {"lemma-7.7", "every state of the reset family is R_MC-related to a reachable state"},
+      {"theorem-7.8", "from an arbitrary state, the traces are reachable traces of "
+                      "R(VLayer[MC]) from delta + d + e + eps_sample on: theorem-7.5, lemma-7.7 "
+                      "and lemma-7.6 composed as the paper does"}};
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     if (p.at("nbh") != 4 && p.at("nbh") != 8)
       return "nbh must be 4 or 8, not " + p.at("nbh").text();
@@ -182,6 +186,14 @@ ModelDefinition vlayer_mc_definition() {
         custom("lemma-7.7", "each ResetMC state is R_MC-related to a reachable state (§7.3)",
                [=](const checker::ExploreOptions& o) {
                  return vlayer_mc::check_lemma_7_7(c, layer, window, o, reading);
+               }),
+        custom("theorem-7.8", "the traces stabilise to reachable traces of R(VLayer[MC]) (§7.3)",
+               [=](const checker::ExploreOptions& o) {
+                 // In the order of the paper's argument, each within the property's limits.
+                 const auto into_lmc = vlayer_mc::check_theorem_7_5(c, window, starts, o);
+                 const auto related = vlayer_mc::check_lemma_7_7(c, layer, window, o, reading);
+                 const auto simulation = vlayer_mc::check_lemma_7_6(c, layer, window, o, reading);
+                 return vlayer_mc::theorem_7_8(into_lmc, simulation, related);
                })};
     return m;
   };
@@ -219,6 +231,8 @@ ModelDefinition vlayer_mc_definition() {
              // printed (finding F4).
              {closed_1x1, "lemma-7.6", checker::Verdict::incomplete},
              {closed_1x1, "lemma-7.7", checker::Verdict::violated},
+             // Theorem 7.8 by the paper's composition: Lemma 7.7's failure breaks it.
+             {closed_1x1, "theorem-7.8", checker::Verdict::violated},
              // A client buffer that delays (e = 1) and the slack ε = 1 (δ = 10 meets the
              // round-length rule, 9): the instance, and Lemma 7.3 on 1×2 fully repaired.
              {slow_1x2, "no-timelock", checker::Verdict::holds},
