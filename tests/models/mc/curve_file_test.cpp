@@ -8,13 +8,11 @@
 #include "models/mc/curve_file.hpp"
 #include "models/mc/round_config.hpp"
 
-using namespace mc;
-
 namespace {
 
-CurveFile parse(const std::string& text) {
+mc::CurveFile parse(const std::string& text) {
   std::istringstream in(text);
-  return parse_curve_file(in, "c.txt");
+  return mc::parse_curve_file(in, "c.txt");
 }
 
 std::string error_of(const std::string& text) {
@@ -29,7 +27,7 @@ std::string error_of(const std::string& text) {
 } // namespace
 
 TEST_CASE("a curve file gives q as a matrix, '.' for regions off the curve") {
-  const CurveFile file = parse("# zigzag\n. 1 .\n1 2 1   # the middle row\n\n. . 3\n");
+  const mc::CurveFile file = parse("# zigzag\n. 1 .\n1 2 1   # the middle row\n\n. . 3\n");
   CHECK(file.m == 3);
   CHECK(file.q == std::vector<std::int64_t>{0, 1, 0, 1, 2, 1, 0, 0, 3});
   CHECK(!file.polyline);
@@ -38,14 +36,14 @@ TEST_CASE("a curve file gives q as a matrix, '.' for regions off the curve") {
 TEST_CASE("a curve file gives a polyline whose q the tool computes") {
   // Along the middle of row 0 from x = 1/2 to 5/2, then down the middle of column 2 to
   // y = 5/2: region (0,0) holds 1/2, (0,1) 1, (0,2) 1/2 + 1/2, (1,2) 1, (2,2) 1/2; σ = 1/4.
-  const CurveFile file =
+  const mc::CurveFile file =
       parse("grid 3\nsigma 1/4\npolyline (1/2,1/2) (5/2,1/2)\npolyline (5/2,5/2)\n");
   CHECK(file.m == 3);
-  CHECK(file.sigma == Rational(1, 4));
+  CHECK(file.sigma == mc::Rational(1, 4));
   REQUIRE(file.polyline);
   CHECK(file.q == std::vector<std::int64_t>{2, 4, 4, 0, 0, 4, 0, 0, 2});
   // Closed: the square through the centres of the outer ring, 1 in each of its 8 regions.
-  const CurveFile ring =
+  const mc::CurveFile ring =
       parse("grid 3\npolyline (1/2,1/2) (5/2,1/2) (5/2,5/2) (1/2,5/2)\nclosed\n");
   CHECK(ring.q == std::vector<std::int64_t>{1, 1, 1, 1, 0, 1, 1, 1, 1});
 }
@@ -72,18 +70,19 @@ TEST_CASE("a bad curve file is one line naming the file and the line") {
   CHECK(error_of("grid 2\npolyline (0,0) (2,2) (2,0) (0,2)\n").rfind("c.txt: ", 0) == 0);
 }
 
-TEST_CASE("a round configuration written by round_config_json reads back to itself") {
-  const RoundSystem system(GridTiling(2, Neighbourhood::four), {0, 1, 1, 3},
-                           McParams{1, Rational(1, 2), Rational(2, 3)});
-  const Counts robots{5, 0, 0, 2};
-  const std::string text = round_config_json(system, robots);
+TEST_CASE("a round configuration written by mc::round_config_json reads back to itself") {
+  const mc::RoundSystem system(mc::GridTiling(2, mc::Neighbourhood::four), {0, 1, 1, 3},
+                               mc::McParams{1, mc::Rational(1, 2), mc::Rational(2, 3)});
+  const mc::Counts robots{5, 0, 0, 2};
+  const std::string text = mc::round_config_json(system, robots);
   std::istringstream in(text);
-  const RoundConfig back = read_round_config(in, "written");
+  const mc::RoundConfig back = mc::read_round_config(in, "written");
   CHECK(back.robots == robots);
   CHECK(back.system.q() == system.q());
-  CHECK(back.system.params().rho2 == Rational(2, 3));
-  CHECK(back.system.grid().neighbourhood() == Neighbourhood::four);
-  CHECK(round_config_json(back.system, back.robots) == text);
+  CHECK(back.system.params().rho2 == mc::Rational(2, 3));
+  CHECK(back.system.grid().neighbourhood() == mc::Neighbourhood::four);
+  CHECK(mc::round_config_json(back.system, back.robots) == text);
   std::istringstream bad("{\"m\": 2}");
-  CHECK_THROWS_WITH(read_round_config(bad, "b.json"), "round config 'b.json': missing field 'nbh'");
+  CHECK_THROWS_WITH(mc::read_round_config(bad, "b.json"),
+                    "round config 'b.json': missing field 'nbh'");
 }

@@ -57,11 +57,11 @@ const SortingCriterion higher_first = [](int x, int y) { return x > y; };
 // An independent acyclicity check: Warshall's closure, then no robot reaches itself.
 bool acyclic(const Adjacency& graph) {
   Adjacency reach = graph;
-  for (int k = 0; k < max_robots; ++k)
-    for (int x = 0; x < max_robots; ++x)
+  for (int k = 0; k < path_reservation::max_robots; ++k)
+    for (int x = 0; x < path_reservation::max_robots; ++x)
       if ((reach[x] >> k) & 1u)
         reach[x] |= reach[k];
-  for (int x = 0; x < max_robots; ++x)
+  for (int x = 0; x < path_reservation::max_robots; ++x)
     if ((reach[x] >> x) & 1u)
       return false;
   return true;
@@ -259,7 +259,7 @@ TEST_CASE("Conflict resolver: conflicting robots are ordered by the sorting crit
     CHECK(result.predecessors_of(0) == set_of({1, 2}));
   }
   SECTION("an application criterion, e.g. the distance to the intersection") {
-    const int distance[max_robots] = {5, 1, 3, 0};
+    const int distance[path_reservation::max_robots] = {5, 1, 3, 0};
     const SortingCriterion nearest_first = [&](int x, int y) { return distance[x] < distance[y]; };
     const Precedence result = resolve_precedence(depend, relations, nearest_first);
     CHECK(result.successors == graph_of({{1, 0}, {1, 2}, {2, 0}}));
@@ -347,8 +347,8 @@ TEST_CASE("resolve_precedence: the same inputs give the same graph", "[precedenc
   after_me(depend, 0, 1);
   ZoneRelations relations;
   risk_post(relations, 1, 2);
-  for (int x = 0; x < max_robots; ++x)
-    for (int y = x + 1; y < max_robots; ++y)
+  for (int x = 0; x < path_reservation::max_robots; ++x)
+    for (int y = x + 1; y < path_reservation::max_robots; ++y)
       conflict(relations, x, y);
   // Dag_risk: 1 -> 0 (AfterMe), 1 -> 2 (Risk). The criterion (higher first) then adds 2 -> 0,
   // 3 -> 0, reverses 2 -> 1 (it would close 1 -> 2 -> 1) into the 1 -> 2 already there, and
@@ -399,6 +399,7 @@ TEST_CASE("Broken preconditions throw", "[precedence]") {
                     std::invalid_argument);
   }
   SECTION("no such robot") {
-    CHECK_THROWS_AS(Precedence{}.predecessors_of(max_robots), std::invalid_argument);
+    CHECK_THROWS_AS(Precedence{}.predecessors_of(path_reservation::max_robots),
+                    std::invalid_argument);
   }
 }
