@@ -4,8 +4,11 @@
 // with one line, and its caller adds the file and the line number, so that every error is
 // one line "<file>:<line>: <what>".
 
+#include <algorithm>
+#include <istream>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -40,6 +43,29 @@ inline void once(std::optional<int>& seen, int line, const std::string& keyword)
     throw LineError{"a second " + keyword + " (the first is on line " + std::to_string(*seen) +
                     ")"};
   seen = line;
+}
+
+// Calls statement(text, line) for every line of `in` that holds something once a '#'
+// comment and the blanks around it are taken away; a LineError it throws becomes one
+// std::invalid_argument "<source>:<line>: <what>", and so does a read error. Returns
+// "<source>:<last line>: ", where a reader says what is missing at the end.
+template <class Statement>
+std::string for_each_statement(std::istream& in, const std::string& source, Statement statement) {
+  int line = 0;
+  for (std::string text; std::getline(in, text);) {
+    ++line;
+    text = trim(text.substr(0, text.find('#')));
+    if (text.empty())
+      continue;
+    try {
+      statement(text, line);
+    } catch (const LineError& e) {
+      throw std::invalid_argument(source + ":" + std::to_string(line) + ": " + e.what);
+    }
+  }
+  if (in.bad())
+    throw std::invalid_argument(source + ": cannot read");
+  return source + ":" + std::to_string(std::max(line, 1)) + ": ";
 }
 
 } // namespace support

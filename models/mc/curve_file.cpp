@@ -134,21 +134,8 @@ void parse_line(const std::string& text, int line, Statements& s) {
 
 CurveFile parse_curve_file(std::istream& in, const std::string& source) {
   Statements s;
-  int line = 0;
-  for (std::string text; std::getline(in, text);) {
-    ++line;
-    text = trim(text.substr(0, text.find('#')));
-    if (text.empty())
-      continue;
-    try {
-      parse_line(text, line, s);
-    } catch (const LineError& e) {
-      throw std::invalid_argument(source + ":" + std::to_string(line) + ": " + e.what);
-    }
-  }
-  if (in.bad())
-    throw std::invalid_argument(source + ": cannot read");
-  const std::string at_end = source + ":" + std::to_string(std::max(line, 1)) + ": ";
+  const std::string at_end = support::for_each_statement(
+      in, source, [&s](const std::string& text, int line) { parse_line(text, line, s); });
   CurveFile out;
   if (!s.rows.empty()) {
     out.m = static_cast<int>(s.rows.size());

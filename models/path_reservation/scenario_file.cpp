@@ -108,25 +108,14 @@ void parse_line(const std::string& keyword, const std::string& rest, int line, S
 
 Scenario parse_scenario(std::istream& in, const std::string& source_name) {
   Statements s;
-  int line = 0;
-  for (std::string text; std::getline(in, text);) {
-    ++line;
-    text = trim(text.substr(0, text.find('#')));
-    if (text.empty())
-      continue;
-    const auto space = text.find_first_of(" \t");
-    const std::string keyword = text.substr(0, space);
-    const std::string rest = space == std::string::npos ? "" : trim(text.substr(space));
-    try {
-      parse_line(keyword, rest, line, s);
-    } catch (const LineError& e) {
-      throw std::invalid_argument(source_name + ":" + std::to_string(line) + ": " + e.what);
-    }
-  }
-  if (in.bad())
-    throw std::invalid_argument(source_name + ": cannot read");
   // A missing statement is reported at the last line, where it could still have come.
-  const std::string at_end = source_name + ":" + std::to_string(std::max(line, 1)) + ": ";
+  const std::string at_end =
+      support::for_each_statement(in, source_name, [&s](const std::string& text, int line) {
+        const auto space = text.find_first_of(" \t");
+        const std::string keyword = text.substr(0, space);
+        const std::string rest = space == std::string::npos ? "" : trim(text.substr(space));
+        parse_line(keyword, rest, line, s);
+      });
   if (!s.plane_line)
     throw std::invalid_argument(at_end + "no plane line (plane <width> <height>)");
   if (!s.range_line)
