@@ -3,7 +3,7 @@
 (TOBcast + VNE + LBcast + trivial clients), ONE zone, N physical nodes.
 
 It exists only to size the state space and to sanity-check the decisions of
-../vn_emulation_spec.md (D-numbers below refer to that file).  It is not part
+../vn-emulation.md (D-numbers below refer to that file).  It is not part
 of tioa-check and is not a reference implementation.
 
 Time: integer quanta.  All timestamps are stored relative to "now" (<= 0) and
