@@ -7,6 +7,7 @@
 #include "catalogue/token_ring.hpp"
 #include "catalogue/vlayer_mc.hpp"
 #include "catalogue/vlayer_mc_picture.hpp"
+#include "catalogue/vn_layer.hpp"
 
 namespace catalogue {
 
@@ -21,6 +22,7 @@ const Catalogue& builtin_models() {
         .add(fischer_definition())
         .add(mc_round_definition())
         .add(std::move(vlayer_mc))
+        .add(vn_layer_definition())
         .add(std::move(path_reservation));
     return c;
   }();

@@ -1,0 +1,138 @@
+#include "catalogue/vn_layer.hpp"
+
+#include "models/vn_layer/layer.hpp"
+#include "proofs/vn_layer/layer_checks.hpp"
+#include "tioa/operators.hpp"
+
+namespace catalogue {
+
+namespace {
+
+int whole(const ParamValues& p, const char* name) {
+  return static_cast<int>(p.at(name).integer());
+}
+
+} // namespace
+
+vn_layer::VnConfig vn_layer_config(const ParamValues& p) {
+  vn_layer::VnConfig c;
+  c.rows = whole(p, "rows");
+  c.cols = whole(p, "cols");
+  c.nbh = whole(p, "nbh") == 4 ? mc::Neighbourhood::four : mc::Neighbourhood::eight;
+  c.cns = whole(p, "cns");
+  c.b = whole(p, "b");
+  c.delta = whole(p, "delta");
+  c.d_v = whole(p, "d_v");
+  c.d_mmt = whole(p, "d_mmt");
+  c.eps = whole(p, "eps");
+  c.d_r = whole(p, "d_r");
+  c.vc = whole(p, "vc");
+  c.k = whole(p, "k");
+  c.rho1 = p.at("rho1").rational();
+  c.rho2 = p.at("rho2").rational();
+  c.cn_fail = p.at("cn_fail").text() == "keep" ? vn_layer::CnFail::keep : vn_layer::CnFail::reset;
+  const std::string vn_fail = p.at("vn_fail").text();
+  c.vn_fail = vn_fail == "never" ? vn_layer::VnFail::never
+              : vn_fail == "any" ? vn_layer::VnFail::any
+                                 : vn_layer::VnFail::empty;
+  c.vns_start_failed = p.at("vn_start").text() == "failed";
+  c.owned_ends = whole(p, "owned_ends") == 1;
+  return c;
+}
+
+ModelDefinition vn_layer_definition() {
+  ModelDefinition d;
+  d.name = "vn-layer";
+  d.description = "the conference virtual-node layer: CN(delta)_i and VN(e, rho1, rho2)_h of "
+                  "seed 001 Figs. 2-3 / seed 002 Figs. 5-6 with VLBcast and the VN restarts, "
+                  "on a rows x cols grid with a b x b lattice per zone (time: quanta; "
+                  "models/vn_layer/README.md)";
+  d.params = {
+      {"rows", 2, 1, 4, "rows of zones"},
+      {"cols", 1, 1, 4, "columns of zones (at most 4 zones)"},
+      {"nbh", 4, 4, 8, "neighbourhood: 4 (seeds 001/002) or 8"},
+      {"cns", 2, 1, 3, "number of client nodes"},
+      {"b", 2, 2, 8, "lattice units per zone side (even)"},
+      {"delta", 13, 2, 64, "round length delta in quanta (seed 002 §V-B)"},
+      {"d_v", 1, 1, 16, "VLBcast delay bound d_v"},
+      {"d_mmt", 1, 0, 16, "upper bound d_MMT of the VN's send task"},
+      {"eps", 1, 0, 16, "the slack eps of the CN's trigger times"},
+      {"d_r", 1, 0, 16, "VN start-up time d_r"},
+      {"vc", 2, 1, 16, "CN speed v_c, lattice units per quantum in each coordinate"},
+      {"k", 1, 1, 3, "safety parameter (the conference's e)"},
+      {"rho1", ParamValue(mc::Rational(1, 2)), 0, 1, "damping of calctarget", ParamKind::rational,
+       true, true},
+      {"rho2", ParamValue(mc::Rational(9, 10)), 0, 1, "damping of assign", ParamKind::rational,
+       true, true},
+      ParamSpec::choice("start", "all", {"all", "corner"},
+                        "all: the CNs at every placement on the lattice; corner: all at the "
+                        "bottom-left corner"),
+      {"cn_faults", 0, 0, 1, "1: CNs fail and recover at any time after the start"},
+      ParamSpec::choice("cn_fail", "reset", {"reset", "keep"},
+                        "a failing CN resets its internal variables (seed 002 line 35) or "
+                        "keeps them (seed 001 line 36)"),
+      ParamSpec::choice("vn_fail", "empty", {"empty", "never", "any"},
+                        "when a VN may fail: only while no active CN is in its zone (the "
+                        "emulation), never, or at any time (the layer's text)"),
+      ParamSpec::choice("vn_start", "failed", {"failed", "alive"},
+                        "the VNs at time 0 (unstated; the emulation has no VNE yet)"),
+      ParamSpec::change("owned_ends",
+                        "1: calctarget's lines 35-36 aim at the ends of Gamma_h that zone h "
+                        "owns (vlayer-mc README D14)")};
+  d.properties = {
+      {"no-timelock", "every reachable state has an action or a tick"},
+      {"round-timing", "(T1)-(T4): cn-updates before the exchange-trigger, vn-updates before "
+                       "the targets, target-updates within d_MMT + 2d_v, CNs on target and VNs "
+                       "alive at each round start (seed 002 §V-B)"},
+      {"y-consistency", "VNs that compute targets in the same round agree on the counts they "
+                        "share (seed 002 §VI, line 232)"}};
+  d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
+    if (p.at("nbh") != 4 && p.at("nbh") != 8)
+      return "nbh must be 4 or 8, not " + p.at("nbh").text();
+    return vn_layer::invalid(vn_layer_config(p));
+  };
+  d.build = [](const ParamValues& p) {
+    const vn_layer::VnConfig c = vn_layer_config(p);
+    const vn_layer::Lattice lattice = c.lattice();
+    const tioa::Automaton layer = vn_layer::vn_layer(c, p.at("cn_faults") == 1);
+    std::vector<vn_layer::Point> corner(static_cast<std::size_t>(c.cns),
+                                        lattice.point(0, lattice.height() - 1));
+    const tioa::StartSet start = p.at("start").text() == "corner"
+                                     ? vn_layer::placed_start(layer, c, corner)
+                                     : vn_layer::every_placement(layer, c);
+    ModelInstance m{tioa::Start(layer, start), {}, "1 time unit"};
+    const tioa::Automaton system = m.system;
+    const auto custom = [](std::string name, std::string description,
+                           std::function<checker::PropertyResult(const checker::ExploreOptions&)>
+                               run) {
+      return checker::Property{
+          std::move(name), std::move(description), checker::PropertyKind::custom, {}, "", {}, "",
+          std::move(run)};
+    };
+    checker::Property no_timelock =
+        custom("no-timelock", "every reachable state has an action or a tick",
+               [=](const checker::ExploreOptions& o) {
+                 checker::PropertyResult r = checker::check_no_deadlock(system, o);
+                 vn_layer::note_round_rules(c, r);
+                 return r;
+               });
+    no_timelock.fingerprint_store = true;
+    m.properties = {std::move(no_timelock),
+                    custom("round-timing", "(T1)-(T4) of seed 002 §V-B on every reachable state",
+                           [=](const checker::ExploreOptions& o) {
+                             return vn_layer::check_round_timing(c, system, o);
+                           }),
+                    custom("y-consistency",
+                           "y_f(h) = y_g(h) for VNs computing in one round (002:232)",
+                           [=](const checker::ExploreOptions& o) {
+                             return vn_layer::check_y_consistency(c, system, o);
+                           })};
+    return m;
+  };
+  d.suite = {{{}, "no-timelock", checker::Verdict::holds},
+             {{}, "round-timing", checker::Verdict::holds},
+             {{}, "y-consistency", checker::Verdict::holds}};
+  return d;
+}
+
+} // namespace catalogue

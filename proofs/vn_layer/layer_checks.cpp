@@ -1,0 +1,68 @@
+#include "proofs/vn_layer/layer_checks.hpp"
+
+#include <cstdio>
+#include <memory>
+
+#include "checker/property.hpp"
+#include "models/vn_layer/observers.hpp"
+
+namespace vn_layer {
+
+namespace {
+
+using Failure = std::optional<std::string> (Observers::*)(const tioa::State&) const;
+
+// check_invariant of "no failure", within the model's bounds (an overflow makes the check
+// incomplete, checker::Property::beyond_bound), with the failure of the trace's last state.
+checker::PropertyResult check_observed(const VnConfig& c, const tioa::Automaton& system,
+                                       const checker::ExploreOptions& options, Failure failure,
+                                       std::string name, std::string description) {
+  const auto observers = std::make_shared<const Observers>(system, c);
+  checker::Property property;
+  property.name = name;
+  property.description = description;
+  property.kind = checker::PropertyKind::invariant;
+  property.predicate = [=](const tioa::State& s) { return !((*observers).*failure)(s); };
+  property.predicate_name = std::move(description);
+  property.beyond_bound = [=](const tioa::State& s) { return observers->overflowed(s); };
+  property.bound_name = "a send-buffer of 2 messages, or one message per kind and sender in "
+                        "VLBcast";
+  checker::PropertyResult r = checker::run_property(system, property, options);
+  if (r.verdict == checker::Verdict::violated && r.trace && !r.trace->steps.empty()) {
+    std::vector<tioa::Word> last = r.trace->steps.back().state;
+    last.push_back(0);
+    if (const auto why = ((*observers).*failure)(tioa::State(last.data(), 0)))
+      r.notes.push_back("the last state breaks " + *why);
+  }
+  note_round_rules(c, r);
+  return r;
+}
+
+} // namespace
+
+checker::PropertyResult check_round_timing(const VnConfig& c, const tioa::Automaton& system,
+                                           const checker::ExploreOptions& options) {
+  return check_observed(c, system, options, &Observers::round_timing_failure, "round-timing",
+                        "(T1)-(T4) of seed 002 §V-B: messages within their slots, CNs on "
+                        "target and VNs alive at every round start");
+}
+
+checker::PropertyResult check_y_consistency(const VnConfig& c, const tioa::Automaton& system,
+                                            const checker::ExploreOptions& options) {
+  return check_observed(c, system, options, &Observers::y_failure, "y-consistency",
+                        "VNs that compute in the same round agree on every count they share "
+                        "(seed 002 §VI, line 232)");
+}
+
+void note_round_rules(const VnConfig& c, checker::PropertyResult& r) {
+  char paper[32];
+  std::snprintf(paper, sizeof paper, "%.2f", paper_round_bound(c));
+  const int lattice = lattice_round_bound(c);
+  const bool paper_ok = paper_round_rule_holds(c), lattice_ok = c.delta > lattice;
+  r.notes.push_back("delta = " + std::to_string(c.delta) + (paper_ok ? " meets" : " breaks") +
+                    " the paper's round-length rule (seed 002 §V-B: delta > " + paper + ") and" +
+                    (lattice_ok ? " meets" : " breaks") + " the lattice's (delta > " +
+                    std::to_string(lattice) + ", models/vn_layer/README.md)");
+}
+
+} // namespace vn_layer
