@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace vn_layer {
 
@@ -39,6 +40,12 @@ bool paper_round_rule_holds(const VnConfig& c) {
 double paper_round_bound(const VnConfig& c) {
   const double b = c.b, v = c.vc;
   return messaging(c) + std::max(std::sqrt(2.5) * b / v, std::sqrt(10.0) * b / (3 * v) + c.d_r);
+}
+
+std::string VnConfig::paper_round_bound_text() const {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", paper_round_bound(*this));
+  return text;
 }
 
 int lattice_round_bound(const VnConfig& c) {

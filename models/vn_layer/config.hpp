@@ -45,6 +45,8 @@ struct VnConfig {
   int target_phase() const { return d_mmt + 3 * d_v + 2 * eps; }
   // The same instance for vlayer-mc's assign and calctarget on the lattice (C18, C19).
   vlayer_mc::VlConfig targets_config() const;
+  // paper_round_bound with two decimals, for reports.
+  std::string paper_round_bound_text() const;
 };
 
 // δ > 2d_MMT + 5d_v + 2ε + max(√2.5·b/v_c, √10·b/(3v_c) + d_r) (002:162, 001:143),

@@ -1,6 +1,5 @@
 #include "proofs/vn_layer/layer_checks.hpp"
 
-#include <cstdio>
 #include <memory>
 
 #include "checker/property.hpp"
@@ -55,8 +54,7 @@ checker::PropertyResult check_y_consistency(const VnConfig& c, const tioa::Autom
 }
 
 void note_round_rules(const VnConfig& c, checker::PropertyResult& r) {
-  char paper[32];
-  std::snprintf(paper, sizeof paper, "%.2f", paper_round_bound(c));
+  const std::string paper = c.paper_round_bound_text();
   const int lattice = lattice_round_bound(c);
   const bool paper_ok = paper_round_rule_holds(c), lattice_ok = c.delta > lattice;
   r.notes.push_back("delta = " + std::to_string(c.delta) + (paper_ok ? " meets" : " breaks") +
