@@ -129,9 +129,21 @@ ModelDefinition vn_layer_definition() {
                            })};
     return m;
   };
+  // 2×1 with 2 CNs at every placement (a second each); then from the corner, what breaks:
+  // δ = 12 meets the paper's round rule but not the lattice's (README finding V1), ε = 0
+  // lets a cn-update come after the exchange-trigger (C14), and a VN that may fail with CNs
+  // in its zone breaks (Y) (C10, finding V2).
+  const auto corner = [](ParamValues p) {
+    p.emplace("start", ParamValue::choice("corner"));
+    return p;
+  };
   d.suite = {{{}, "no-timelock", checker::Verdict::holds},
              {{}, "round-timing", checker::Verdict::holds},
-             {{}, "y-consistency", checker::Verdict::holds}};
+             {{}, "y-consistency", checker::Verdict::holds},
+             {corner({{"delta", 12}}), "round-timing", checker::Verdict::violated},
+             {corner({{"eps", 0}}), "round-timing", checker::Verdict::violated},
+             {corner({{"vn_fail", ParamValue::choice("any")}}), "y-consistency",
+              checker::Verdict::violated}};
   return d;
 }
 

@@ -46,8 +46,7 @@ void check_counterexample(const Run& run, const std::string& clause) {
 
 } // namespace
 
-TEST_CASE("vn-layer 2x1, every placement: no time-lock, round timing and (Y) hold",
-          "[vn-layer]") {
+TEST_CASE("vn-layer 2x1, every placement: no time-lock, round timing and (Y) hold", "[vn-layer]") {
   for (const char* property : {"no-timelock", "round-timing", "y-consistency"}) {
     INFO(property);
     const auto r = run(property, {}).result;
