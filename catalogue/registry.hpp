@@ -59,6 +59,11 @@ struct ParamSpec {
 
 using ParamValues = std::map<std::string, ParamValue>;
 
+// The whole-number parameter `name` (declared with ParamKind::integer) as an int.
+inline int whole(const ParamValues& p, const char* name) {
+  return static_cast<int>(p.at(name).integer());
+}
+
 struct ModelInstance {
   tioa::Automaton system;
   std::vector<checker::Property> properties;

@@ -12,14 +12,6 @@
 
 namespace catalogue {
 
-namespace {
-
-int whole(const ParamValues& p, const char* name) {
-  return static_cast<int>(p.at(name).integer());
-}
-
-} // namespace
-
 vlayer_mc::VlConfig vlayer_config(const ParamValues& p) {
   vlayer_mc::VlConfig c;
   c.rows = whole(p, "rows");

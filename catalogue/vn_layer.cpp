@@ -6,14 +6,6 @@
 
 namespace catalogue {
 
-namespace {
-
-int whole(const ParamValues& p, const char* name) {
-  return static_cast<int>(p.at(name).integer());
-}
-
-} // namespace
-
 vn_layer::VnConfig vn_layer_config(const ParamValues& p) {
   vn_layer::VnConfig c;
   c.rows = whole(p, "rows");

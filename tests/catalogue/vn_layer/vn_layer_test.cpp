@@ -9,7 +9,7 @@
 #include "checker/property.hpp"
 #include "checker/trace.hpp"
 
-namespace {
+namespace vn_layer_test {
 
 struct Run {
   checker::PropertyResult result;
@@ -44,25 +44,27 @@ void check_counterexample(const Run& run, const std::string& clause) {
   CHECK(has_note(r, "the last state breaks " + clause));
 }
 
-} // namespace
+} // namespace vn_layer_test
+
+namespace vt = vn_layer_test;
 
 TEST_CASE("vn-layer 2x1, every placement: no time-lock, round timing and (Y) hold", "[vn-layer]") {
   for (const char* property : {"no-timelock", "round-timing", "y-consistency"}) {
     INFO(property);
-    const auto r = run(property, {}).result;
+    const auto r = vt::run(property, {}).result;
     CHECK(r.verdict == checker::Verdict::holds);
     CHECK(r.states == 105'854);
     CHECK(r.edges == 191'649);
     CHECK(r.coverage.count == 225); // 15 points, 2 CNs
-    CHECK(has_note(r, "delta = 13 meets the paper's round-length rule (seed 002 §V-B: delta > "
-                      "11.05) and meets the lattice's (delta > 12"));
+    CHECK(vt::has_note(r, "delta = 13 meets the paper's round-length rule (seed 002 §V-B: delta > "
+                          "11.05) and meets the lattice's (delta > 12"));
   }
 }
 
 TEST_CASE("vn-layer counts from the corner: 1x1, 1x2 and 2x1", "[vn-layer]") {
-  CHECK(run("no-timelock", {"start=corner"}).result.states == 737);
-  CHECK(run("no-timelock", {"start=corner", "rows=1"}).result.states == 586);
-  CHECK(run("no-timelock", {"start=corner", "rows=1", "cols=2"}).result.states == 822);
+  CHECK(vt::run("no-timelock", {"start=corner"}).result.states == 737);
+  CHECK(vt::run("no-timelock", {"start=corner", "rows=1"}).result.states == 586);
+  CHECK(vt::run("no-timelock", {"start=corner", "rows=1", "cols=2"}).result.states == 822);
 }
 
 TEST_CASE("vn-layer delta = 12 meets the paper's rule but not the lattice's: a VN restarts "
@@ -70,40 +72,41 @@ TEST_CASE("vn-layer delta = 12 meets the paper's rule but not the lattice's: a V
           "[vn-layer]") {
   // The CN sent to o_0 enters zone 0 only on the step that lands it there (half-open
   // zones), and VN_0 may take d_r more: at 9 + 2 + 1 = 12 = δ it is not yet alive.
-  const Run r = run("round-timing", {"start=corner", "delta=12"});
-  check_counterexample(r, "(T4) VN_0 is failed at a round start with CN_0 in its zone");
+  const vt::Run r = vt::run("round-timing", {"start=corner", "delta=12"});
+  vt::check_counterexample(r, "(T4) VN_0 is failed at a round start with CN_0 in its zone");
   CHECK(r.result.trace->steps.back().time == 24);
-  CHECK(has_note(r.result, "delta = 12 meets the paper's round-length rule"));
-  CHECK(has_note(r.result, "breaks the lattice's (delta > 12"));
-  CHECK(run("y-consistency", {"start=corner", "delta=12"}).result.verdict ==
+  CHECK(vt::has_note(r.result, "delta = 12 meets the paper's round-length rule"));
+  CHECK(vt::has_note(r.result, "breaks the lattice's (delta > 12"));
+  CHECK(vt::run("y-consistency", {"start=corner", "delta=12"}).result.verdict ==
         checker::Verdict::holds);
 }
 
 TEST_CASE("vn-layer delta = 10 breaks both rules, and (Y) with them", "[vn-layer]") {
-  check_counterexample(run("y-consistency", {"start=corner", "delta=10"}),
-                       "(Y) VN_0 and VN_1 computed the same round with y(1) = 0 and 2");
+  vt::check_counterexample(vt::run("y-consistency", {"start=corner", "delta=10"}),
+                           "(Y) VN_0 and VN_1 computed the same round with y(1) = 0 and 2");
 }
 
 TEST_CASE("vn-layer eps = 0: a cn-update can arrive after the exchange-trigger (C14)",
           "[vn-layer]") {
-  check_counterexample(run("round-timing", {"start=corner", "eps=0"}),
-                       "(T1) a cn-update reached VN_1 after its exchange-trigger");
-  check_counterexample(run("y-consistency", {"start=corner", "eps=0"}), "(Y) VN_0 and VN_1");
+  vt::check_counterexample(vt::run("round-timing", {"start=corner", "eps=0"}),
+                           "(T1) a cn-update reached VN_1 after its exchange-trigger");
+  vt::check_counterexample(vt::run("y-consistency", {"start=corner", "eps=0"}),
+                           "(Y) VN_0 and VN_1");
 }
 
 TEST_CASE("vn-layer vn_fail=any: a VN that fails with CNs in its zone breaks (Y) (C10)",
           "[vn-layer]") {
-  check_counterexample(run("y-consistency", {"start=corner", "vn_fail=any"}),
-                       "(Y) VN_0 and VN_1 computed the same round with y(1) = 0 and 1");
+  vt::check_counterexample(vt::run("y-consistency", {"start=corner", "vn_fail=any"}),
+                           "(Y) VN_0 and VN_1 computed the same round with y(1) = 0 and 1");
   // Only while its zone is empty (the emulation), no VN of this instance ever fails.
-  CHECK(run("y-consistency", {"vn_fail=never"}).result.states == 105'854);
+  CHECK(vt::run("y-consistency", {"vn_fail=never"}).result.states == 105'854);
 }
 
 TEST_CASE("vn-layer: a CN that fails and recovers can send twice in one instant, past the "
           "model's bound",
           "[vn-layer]") {
   const auto r =
-      run("y-consistency", {"start=corner", "rows=1", "cols=1", "cns=1", "cn_faults=1"}).result;
+      vt::run("y-consistency", {"start=corner", "rows=1", "cols=1", "cns=1", "cn_faults=1"}).result;
   CHECK(r.verdict == checker::Verdict::incomplete);
   CHECK_THAT(r.message, Catch::Contains("one message per kind and sender in VLBcast"));
 }

@@ -4,10 +4,8 @@
 
 #include "models/vn_layer/config.hpp"
 
-using vn_layer::VnConfig;
-
 TEST_CASE("vn-layer round rules: the paper's 11.05 and the lattice's 12 on 2x1", "[vn-layer]") {
-  VnConfig c; // d_MMT = d_v = ε = d_r = 1, b = v_c = 2: 9 + max(1.58, 2.05)
+  vn_layer::VnConfig c; // d_MMT = d_v = ε = d_r = 1, b = v_c = 2: 9 + max(1.58, 2.05)
   CHECK(c.paper_round_bound_text() == "11.05");
   CHECK(vn_layer::lattice_round_bound(c) == 12); // 9 + ⌈3/2⌉ + 1
   c.delta = 12;
@@ -19,7 +17,7 @@ TEST_CASE("vn-layer round rules: the paper's 11.05 and the lattice's 12 on 2x1",
 }
 
 TEST_CASE("vn-layer round rules: the restart term decides when d_r is large", "[vn-layer]") {
-  VnConfig c;
+  vn_layer::VnConfig c;
   c.d_r = 3; // 9 + √10·2/6 + 3 = 13.05
   c.delta = 13;
   CHECK_FALSE(vn_layer::paper_round_rule_holds(c));
@@ -28,7 +26,7 @@ TEST_CASE("vn-layer round rules: the restart term decides when d_r is large", "[
 }
 
 TEST_CASE("vn-layer invalid: the target-trigger must fall inside the round", "[vn-layer]") {
-  VnConfig c;
+  vn_layer::VnConfig c;
   CHECK_FALSE(vn_layer::invalid(c));
   c.delta = 6; // d_MMT + 3d_v + 2ε = 6
   REQUIRE(vn_layer::invalid(c));

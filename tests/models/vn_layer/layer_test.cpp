@@ -7,7 +7,7 @@
 #include "models/vn_layer/layer.hpp"
 #include "tioa/operators.hpp"
 
-namespace {
+namespace vn_layer_test {
 
 using vn_layer::VnConfig;
 
@@ -19,7 +19,10 @@ tioa::Automaton from_corner(const VnConfig& c) {
   return tioa::Start(layer, vn_layer::placed_start(layer, c, corner));
 }
 
-} // namespace
+} // namespace vn_layer_test
+
+using vn_layer::VnConfig;
+using vn_layer_test::from_corner;
 
 TEST_CASE("vn-layer 2x1: one CN reaches o_0 in round 1 and VN_0 comes alive", "[vn-layer]") {
   const VnConfig c;
