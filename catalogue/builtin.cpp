@@ -7,6 +7,7 @@
 #include "catalogue/token_ring.hpp"
 #include "catalogue/vlayer_mc.hpp"
 #include "catalogue/vlayer_mc_picture.hpp"
+#include "catalogue/vn_emulation.hpp"
 #include "catalogue/vn_layer.hpp"
 
 namespace catalogue {
@@ -23,6 +24,7 @@ const Catalogue& builtin_models() {
         .add(mc_round_definition())
         .add(std::move(vlayer_mc))
         .add(vn_layer_definition())
+        .add(vn_emulation_definition())
         .add(std::move(path_reservation));
     return c;
   }();

@@ -106,7 +106,7 @@ TEST_CASE("registry: find names the known models when it fails", "[models][regis
     FAIL("no UsageError");
   } catch (const UsageError& e) {
     CHECK(std::string(e.what()) == "unknown model 'fisher' (known: token-ring, fischer, mc-round, "
-                                   "vlayer-mc, path-reservation)");
+                                   "vlayer-mc, vn-layer, vn-emulation, path-reservation)");
   }
 }
 

@@ -1,0 +1,27 @@
+#include "models/vn_emulation/config.hpp"
+
+namespace vn_emulation {
+
+std::optional<std::string> invalid(const EmuConfig& c) {
+  if (c.pns < 1 || c.pns > 3)
+    return "pns must be 1..3, not " + std::to_string(c.pns);
+  if (c.d_p < 1 || c.d_p > 3)
+    return "d_p must be 1..3, not " + std::to_string(c.d_p);
+  if (c.eps < 0 || c.eps > 3)
+    return "eps must be 0..3, not " + std::to_string(c.eps);
+  if (c.messages < 0 || c.messages > 3)
+    return "messages must be 0..3, not " + std::to_string(c.messages);
+  if (c.fails < 0 || c.fails > 3)
+    return "fails must be 0..3, not " + std::to_string(c.fails);
+  return std::nullopt;
+}
+
+std::string describe(const EmuConfig& c) {
+  return "pns=" + std::to_string(c.pns) + ", d_p=" + std::to_string(c.d_p) +
+         ", eps=" + std::to_string(c.eps) + ", messages=" + std::to_string(c.messages) +
+         ", fails=" + std::to_string(c.fails) +
+         ", start=" + (c.start == Start::cold ? "cold" : "warm") +
+         ", inputs=" + (c.inputs == Inputs::anywhere ? "anywhere" : "ticks");
+}
+
+} // namespace vn_emulation

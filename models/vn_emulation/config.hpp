@@ -1,0 +1,65 @@
+#pragma once
+// The parameters of the VN emulation of seed 002 §VIII (TOBcast, VNE, join/reset; the
+// decisions D1–D41 of docs/design/vn-emulation.md, as built in README.md): the physical
+// nodes of one zone, the environment's budgets, the constants d_p and ε, and the
+// readings of the unclear lines. Every time is a whole number of quanta.
+
+#include <optional>
+#include <string>
+
+namespace vn_emulation {
+
+// At time 0 (D22): every VNE with h = ⊥ as printed (002:405), so every VN starts failed;
+// or every PN's VNE already active in its zone with the VN's start state.
+enum class Start { cold, warm };
+// When the environment acts (D24): between any two steps, or only where time may pass.
+enum class Inputs { anywhere, ticks };
+
+struct EmuConfig {
+  int pns = 2;      // physical nodes PN_0..PN_{pns−1}, all in the one zone B_0
+  int d_p = 1;      // LBcast's delay bound (002:37)
+  int eps = 1;      // TOBcast's extra hold ε (002:348; "ε small", 001:46)
+  int messages = 1; // client messages the CNs send in all (the budget M)
+  int fails = 1;    // fail_i inputs in all (the budget F); recover_i is not counted
+  Start start = Start::warm;
+  Inputs inputs = Inputs::anywhere;
+  // Readings of lines the OCR or the paper leave open (README "Readings"):
+  bool record_always = false; // D9: completed-actions += key after the if, not inside it
+  bool quiescent_ack = true;  // D32: ack-join waits until no VN action is enabled (002:456)
+
+  // The instance VN, a FIFO counter (D31): count mod counter_modulus, the last sender, a
+  // send queue of at most out_capacity entries, and a send counter mod send_modulus.
+  static constexpr int counter_modulus = 2;
+  static constexpr int out_capacity = 2;
+  static constexpr int send_modulus = 4;
+  // The model's bounds on its queues and sets (a state past one is flagged, and a check
+  // that meets one is incomplete, never wrong).
+  static constexpr int pending_capacity = 4;   // pending-actions
+  static constexpr int tob_out_capacity = 3;   // TOBcast-out
+  static constexpr int local_out_capacity = 2; // local-out
+  static constexpr int flight_capacity = 4;    // LBcast packets in flight per sender
+  static constexpr int buffer_capacity = 6;    // TOBcast's hold buffer
+  static constexpr int key_capacity = 2;       // send keys in completed-actions
+  static constexpr int seen_capacity = 2;      // VN message ids a client remembers
+  static constexpr int sequence_capacity = 7;  // TOBcast sequence numbers in one instant
+
+  // TOBcast delivers a packet exactly d_p + ε after it was sent (002:348).
+  int hold() const { return d_p + eps; }
+  // restart fires at realtime = join-id + 3d_p + 4ε (002:430–434).
+  int restart_age() const { return 3 * d_p + 4 * eps; }
+  // D11: keys, ids and their ages are dropped after H quanta; ages saturate at H + 2 (D23).
+  int horizon() const { return 4 * d_p + 4 * eps + 2; }
+  int age_cap() const { return horizon() + 2; }
+  // Theorem 2 (002:354): the figures the emulation is claimed to meet.
+  int stated_d_mmt() const { return 2 * d_p + 2 * eps; }
+  int stated_d_r() const { return 4 * d_p + 5 * eps; }
+  int stated_d_v() const { return 2 * d_p + eps; }
+};
+
+// Why the values cannot build a model, or nullopt.
+std::optional<std::string> invalid(const EmuConfig& config);
+
+// "pns=2, d_p=1, eps=1, ..." for reports.
+std::string describe(const EmuConfig& config);
+
+} // namespace vn_emulation

@@ -1,0 +1,657 @@
+#include "models/vn_emulation/emulation.hpp"
+
+#include <algorithm>
+#include <string>
+#include <tuple>
+
+#include "models/vn_emulation/predicates.hpp"
+
+namespace vn_emulation {
+
+namespace {
+
+using tioa::Params;
+
+bool is_empty(const State& s, const PacketSlots& p) {
+  return s[p.kind] == static_cast<int>(Kind::none);
+}
+
+// ---- queues of packets (pending-actions, TOBcast-out, local-out): FIFO, empty places last
+
+bool append(State& s, const std::vector<PacketSlots>& queue, const Packet& p) {
+  for (const PacketSlots& place : queue)
+    if (is_empty(s, place)) {
+      place.store(s, p);
+      return true;
+    }
+  return false;
+}
+
+Packet pop_front(State& s, const std::vector<PacketSlots>& queue) {
+  const Packet head = queue[0].load(s);
+  for (std::size_t k = 1; k < queue.size(); ++k)
+    queue[k - 1].store(s, queue[k].load(s));
+  queue.back().store(s, Packet{});
+  return head;
+}
+
+void clear(State& s, const std::vector<PacketSlots>& queue) {
+  for (const PacketSlots& place : queue)
+    place.store(s, Packet{});
+}
+
+// ---- LBcast's packets in flight of one sender, in the order they were sent
+
+struct Flight {
+  Packet packet;
+  int age = 0, todo = 0, sequence = 0;
+};
+
+std::vector<Flight> load_flight(const State& s, const PnSlots& p) {
+  std::vector<Flight> out;
+  for (const FlightSlots& f : p.flight)
+    if (!is_empty(s, f.packet))
+      out.push_back({f.packet.load(s), s[f.age], s[f.todo], s[f.sequence]});
+  return out;
+}
+
+void store_flight(State& s, const PnSlots& p, const std::vector<Flight>& records) {
+  for (std::size_t k = 0; k < p.flight.size(); ++k) {
+    const Flight f = k < records.size() ? records[k] : Flight{};
+    p.flight[k].packet.store(s, f.packet);
+    s[p.flight[k].age] = f.age;
+    s[p.flight[k].todo] = f.todo;
+    s[p.flight[k].sequence] = f.sequence;
+  }
+}
+
+// ---- TOBcast's hold buffer, in delivery order: timestamp, join-reqs last, sender, sequence
+
+std::vector<Entry> load_buffer(const Slots& slots, const State& s, const PnSlots& p) {
+  std::vector<Entry> out;
+  for (const BufferSlots& b : p.buffer)
+    if (!is_empty(s, b.packet))
+      out.push_back(slots.entry(s, b));
+  return out;
+}
+
+void store_buffer(State& s, const PnSlots& p, std::vector<Entry> entries) {
+  // 002:348: "It then delivers the messages for the timestamp in order of sender id and
+  // sequence number. (... we actually order all join-req messages ... after any other
+  // messages for a particular time.)" An older timestamp is a larger age.
+  std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
+    const auto key = [](const Entry& e) {
+      return std::make_tuple(-e.age, e.packet.kind == Kind::join_req, e.sender, e.sequence);
+    };
+    return key(x) < key(y);
+  });
+  for (std::size_t k = 0; k < p.buffer.size(); ++k) {
+    const Entry e = k < entries.size() ? entries[k] : Entry{Packet{}, -1, 0, 0};
+    p.buffer[k].packet.store(s, e.packet);
+    set_optional(s, p.buffer[k].age, e.age);
+    s[p.buffer[k].sender] = e.sender;
+    s[p.buffer[k].sequence] = e.sequence;
+  }
+}
+
+int up_mask(const Slots& slots, const State& s) {
+  int mask = 0;
+  for (int j = 0; j < slots.config.pns; ++j)
+    if (s[slots.pns[j].up])
+      mask |= 1 << j;
+  return mask;
+}
+
+// lb-send(p)_i (002:37): every active PN may receive it and, all being in range in one
+// zone, must, within d_p (D25, D26: the sender too).
+void lb_send(const Slots& slots, State& s, int i, const Packet& packet, int sequence) {
+  const PnSlots& p = slots.pns[i];
+  std::vector<Flight> records = load_flight(s, p);
+  if (records.size() == p.flight.size()) {
+    slots.exceed(s, i, Bound::flight);
+    return;
+  }
+  records.push_back({packet, 0, up_mask(slots, s), sequence});
+  store_flight(s, p, records);
+}
+
+// 002:35: "The fail_i input action sets the mode to inactive and all internal variables to
+// their initial values" (as printed, h = ⊥ and status active: D1, D22).
+void reset_pn(const Slots& slots, State& s, int i) {
+  const PnSlots& p = slots.pns[i];
+  s[p.up] = false;
+  s[p.status] = Status::active;
+  s.set_bottom(p.zone);
+  p.value.store(s, VnValue{});
+  s.set_bottom(p.pending_join);
+  s.set_bottom(p.completed_join);
+  s.set_bottom(p.join_id);
+  s[p.reset_sent] = false;
+  s[p.proposed] = false;
+  slots.set_completed(s, i, Completed{});
+  clear(s, p.pending);
+  clear(s, p.tob_out);
+  clear(s, p.local_out);
+  s[p.sequence] = 0;
+  store_buffer(s, p, {});
+  for (int k = 0; k < EmuConfig::seen_capacity; ++k) {
+    s.set_bottom(p.seen_age[k]);
+    s[p.seen_from[k]] = 0;
+  }
+  s[p.startup_wait] = 0;
+}
+
+// Adds a VN message id to CN_i's seen ids; false when it was there.
+bool see(const Slots& slots, State& s, int i, const Key& id) {
+  const PnSlots& p = slots.pns[i];
+  std::vector<Key> seen;
+  for (int k = 0; k < EmuConfig::seen_capacity; ++k)
+    if (!s.is_bottom(p.seen_age[k]))
+      seen.push_back({s[p.seen_age[k]], s[p.seen_from[k]]});
+  if (std::find(seen.begin(), seen.end(), id) != seen.end())
+    return false;
+  if (static_cast<int>(seen.size()) == EmuConfig::seen_capacity) {
+    slots.exceed(s, i, Bound::seen);
+    return true;
+  }
+  seen.push_back(id);
+  std::sort(seen.begin(), seen.end(), [](const Key& x, const Key& y) {
+    return std::tie(x.age, x.from) < std::tie(y.age, y.from);
+  });
+  for (int k = 0; k < EmuConfig::seen_capacity; ++k) {
+    const Key key = k < static_cast<int>(seen.size()) ? seen[k] : Key{};
+    set_optional(s, p.seen_age[k], key.age);
+    s[p.seen_from[k]] = key.from;
+  }
+  return true;
+}
+
+void advance_packet(State& s, const PacketSlots& p) {
+  s.advance(p.age);
+  if (p.payload)
+    for (const auto& age : p.key_age)
+      s.advance(age);
+}
+
+// Drops the keys older than the horizon (D11) from a set of keys held in `age`/`from`.
+template <std::size_t N>
+void collect(State& s, const std::array<Variable<int>, N>& age,
+             const std::array<Variable<int>, N>& from, int horizon) {
+  std::vector<Key> kept;
+  for (std::size_t k = 0; k < N; ++k)
+    if (!s.is_bottom(age[k]) && s[age[k]] < horizon)
+      kept.push_back({s[age[k]], s[from[k]]});
+  for (std::size_t k = 0; k < N; ++k) {
+    const Key key = k < kept.size() ? kept[k] : Key{};
+    set_optional(s, age[k], key.age);
+    s[from[k]] = key.from;
+  }
+}
+
+// One quantum: Theorem 2's monitors read the state where time passes, then every age
+// grows, the instant's sequence numbers and client sends start again, and old keys go.
+void tick(const Slots& slots, State& s) {
+  const EmuConfig& c = slots.config;
+  const std::optional<VnValue> abstract = abstract_value(slots, s);
+  for (const PnSlots& p : slots.pns)
+    s[p.startup_wait] =
+        s[p.up] && !abstract ? std::min(s[p.startup_wait] + 1, 2 * c.stated_d_r()) : 0;
+  if (abstract && abstract->can_send()) {
+    const bool sent = optional_value(s, slots.task_sseq) != abstract->sseq;
+    s[slots.task_wait] =
+        std::min((sent ? 0 : static_cast<int>(s[slots.task_wait])) + 1, c.age_cap());
+  } else {
+    s[slots.task_wait] = 0;
+  }
+  set_optional(s, slots.task_sseq, abstract ? abstract->sseq : -1);
+  for (const auto& wait : slots.message_wait)
+    if (!abstract)
+      s.set_bottom(wait);
+    else if (!s.is_bottom(wait))
+      s[wait] = std::min(s[wait] + 1, c.age_cap());
+
+  for (const PnSlots& p : slots.pns) {
+    s.advance(p.pending_join);
+    s.advance(p.completed_join);
+    s.advance(p.join_id);
+    for (const auto& age : p.key_age)
+      s.advance(age);
+    for (const auto& age : p.seen_age)
+      s.advance(age);
+    for (const auto* queue : {&p.pending, &p.tob_out, &p.local_out})
+      for (const PacketSlots& place : *queue)
+        advance_packet(s, place);
+    for (const BufferSlots& b : p.buffer) {
+      s.advance(b.age);
+      advance_packet(s, b.packet);
+    }
+    for (const FlightSlots& f : p.flight) {
+      s.advance(f.age);
+      advance_packet(s, f.packet);
+    }
+    s[p.sequence] = 0;
+    s[p.sent_now] = false;
+    collect(s, p.key_age, p.key_from, c.horizon());
+    collect(s, p.seen_age, p.seen_from, c.horizon());
+  }
+}
+
+// What each step may read and write (tioa/footprint.hpp), for the zero-time reduction: a
+// PN's VNE, TOBcast and CN steps touch its own block; a transmission also its packets in
+// flight (and reads who is up); a delivery the sender's packets; a fail every packet in
+// flight. The monitors and budgets are named where they are written.
+void declare_footprints(tioa::Automaton& a, const std::shared_ptr<const Slots>& slots) {
+  const auto block = [](tioa::Footprint& f, const Block& b) { f.at(b.offset).whole(b.bits); };
+  const auto declare = [&a](const std::string& action, tioa::FootprintFunction footprint) {
+    tioa::TransitionBuilder(a, *a.find_action(action)).footprint(std::move(footprint));
+  };
+  const int n = slots->config.pns;
+  for (int i = 0; i < n; ++i) {
+    const std::string id = "_" + std::to_string(i);
+    const Block own = slots->pns[i].block, flight = slots->pns[i].flight_block;
+    for (const char* local :
+         {"zone-update", "join", "restart", "init-action", "ack-join", "TOBcast-rcv"})
+      declare(local + id, [=](const Params&, tioa::Footprint& f) { block(f, own); });
+    // With inputs=ticks the environment reads whether time may pass: every PN.
+    const auto environment_reads = [=](tioa::Footprint& f) {
+      if (slots->config.inputs == Inputs::ticks)
+        for (const PnSlots& p : slots->pns) {
+          block(f, p.block);
+          block(f, p.flight_block);
+        }
+    };
+    declare("recover" + id, [=](const Params&, tioa::Footprint& f) {
+      block(f, own);
+      environment_reads(f);
+    });
+    declare("simulate-action" + id, [=](const Params&, tioa::Footprint& f) {
+      block(f, own);
+      for (const auto& wait : slots->message_wait)
+        f.reads(wait).writes(wait);
+    });
+    for (const char* transmit : {"TOBcast", "send"})
+      declare(transmit + id, [=](const Params&, tioa::Footprint& f) {
+        block(f, own);
+        block(f, flight);
+        for (const PnSlots& p : slots->pns)
+          f.reads(p.up);
+      });
+    declare("lb-rcv" + id, [=](const Params& m, tioa::Footprint& f) {
+      block(f, own);
+      block(f, slots->pns[m[0]].flight_block);
+    });
+    declare("fail" + id, [=](const Params&, tioa::Footprint& f) {
+      block(f, own);
+      for (const PnSlots& p : slots->pns)
+        block(f, p.flight_block);
+      f.reads(slots->fails_left).writes(slots->fails_left);
+      environment_reads(f);
+    });
+    declare("cn-send" + id, [=](const Params&, tioa::Footprint& f) {
+      block(f, own);
+      block(f, flight);
+      for (const PnSlots& p : slots->pns)
+        f.reads(p.up);
+      f.reads(slots->messages_left).writes(slots->messages_left);
+      for (const auto& wait : slots->message_wait)
+        f.writes(wait);
+      environment_reads(f);
+    });
+  }
+}
+
+} // namespace
+
+Emulation emulation(const EmuConfig& c) {
+  tioa::Automaton a("VNEmulation");
+  const std::shared_ptr<const Slots> slots = declare(a, c);
+  const int n = c.pns;
+  const bool inputs_anywhere = c.inputs == Inputs::anywhere;
+
+  for (int i = 0; i < n; ++i) {
+    const std::string id = "_" + std::to_string(i);
+    const auto alive_here = [slots, i](const State& s) {
+      return !slots->pn_past_bound(s, i) && in_zone(*slots, s, i);
+    };
+    const auto status_is = [slots, i, alive_here](const State& s, Status status) {
+      return alive_here(s) && s[slots->pns[i].status] == status;
+    };
+
+    // Internal zone-update_{i,h} (002:436–444): x ∉ B_h. As printed, plus D19: join-id,
+    // reset-sent, proposed and completed-actions describe the old zone's VN and are cleared.
+    a.internal("zone-update" + id)
+        .pre([slots, i](const State& s, const Params&) {
+          return !slots->pn_past_bound(s, i) && s[slots->pns[i].up] &&
+                 s.is_bottom(slots->pns[i].zone);
+        })
+        .eff([slots, i](State& s, const Params&) {
+          const PnSlots& q = slots->pns[i];
+          s[q.status] = Status::idle;
+          s[q.zone] = 0;
+          q.value.store(s, VnValue{});
+          clear(s, q.pending);
+          s.set_bottom(q.join_id);
+          s[q.reset_sent] = false;
+          s[q.proposed] = false;
+          slots->set_completed(s, i, Completed{});
+        });
+
+    // Internal join_{i,h} (002:426–428): status = idle ∧ x ∈ B_h → joining, join-id ←
+    // realtime, TOBcast-out ∪ {⟨join-req, ⊥, join-id⟩}.
+    a.internal("join" + id)
+        .pre([status_is](const State& s, const Params&) { return status_is(s, Status::idle); })
+        .eff([slots, i](State& s, const Params&) {
+          const PnSlots& q = slots->pns[i];
+          s[q.status] = Status::joining;
+          s[q.join_id] = 0;
+          s[q.reset_sent] = false;
+          Packet req;
+          req.kind = Kind::join_req;
+          req.age = 0;
+          if (!append(s, q.tob_out, req))
+            slots->exceed(s, i, Bound::tob_out);
+        });
+
+    // Internal restart_{i,h} (002:430–434): status = listening ∧ x ∈ B_h ∧ realtime =
+    // join-id + 3d_p + 4ε → TOBcast-out ∪ {⟨reset⟩}; once (D7: reset-sent).
+    a.internal("restart" + id)
+        .pre([slots, i, status_is](const State& s, const Params&) {
+          const PnSlots& q = slots->pns[i];
+          return status_is(s, Status::listening) && !s[q.reset_sent] &&
+                 optional_value(s, q.join_id) == slots->config.restart_age();
+        })
+        .eff([slots, i](State& s, const Params&) {
+          const PnSlots& q = slots->pns[i];
+          Packet reset;
+          reset.kind = Kind::reset;
+          if (!append(s, q.tob_out, reset))
+            slots->exceed(s, i, Bound::tob_out);
+          s[q.reset_sent] = true;
+        });
+
+    // Internal init-action(act)_{i,h} (002:420–424): status = active ∧ x ∈ B_h ∧ δ(val,
+    // act) ≠ ⊥ → TOBcast-out ∪ {⟨simulate, act, ⟨realtime, i⟩⟩}. The counter's one
+    // locally controlled act is ⟨send, head(out)⟩; suggested once per val (D6: proposed).
+    a.internal("init-action" + id)
+        .pre([slots, i, status_is](const State& s, const Params&) {
+          const PnSlots& q = slots->pns[i];
+          return status_is(s, Status::active) && !s[q.proposed] && s[q.value.length] > 0;
+        })
+        .eff([slots, i](State& s, const Params&) {
+          const PnSlots& q = slots->pns[i];
+          Packet suggestion;
+          suggestion.kind = Kind::simulate_send;
+          suggestion.count = s[q.value.out_count[0]];
+          suggestion.last = s[q.value.out_last[0]];
+          suggestion.age = 0;
+          suggestion.from = i;
+          if (!append(s, q.tob_out, suggestion))
+            slots->exceed(s, i, Bound::tob_out);
+          s[q.proposed] = true;
+        });
+
+    // Internal simulate-action(act)_{i,h} (002:446–452), with the indentation of D9:
+    //   dequeue; if key ∉ completed-actions ∧ δ(val, act) ≠ ⊥ then val ← δ(val, act);
+    //   if act = ⟨send, m⟩ then local-out ∪ {m}; completed-actions ∪ {key} (inside the if,
+    //   or after it with record_always).
+    a.internal("simulate-action" + id)
+        .pre([slots, i, status_is](const State& s, const Params&) {
+          return status_is(s, Status::active) && !is_empty(s, slots->pns[i].pending[0]);
+        })
+        .eff([slots, i](State& s, const Params&) {
+          const PnSlots& q = slots->pns[i];
+          const Packet act = pop_front(s, q.pending);
+          Completed done = slots->completed(s, i);
+          VnValue value = q.value.load(s);
+          const bool receive = act.kind == Kind::simulate_receive;
+          const Key key{act.age, act.from};
+          const bool known = receive ? ((done.received >> act.message) & 1) != 0 : done.has(key);
+          const bool enabled = receive || value.send_enabled(act.count, act.last);
+          const auto record = [&] {
+            if (receive)
+              done.received |= 1 << act.message;
+            else if (!done.add(key))
+              slots->exceed(s, i, Bound::keys);
+          };
+          if (!known && enabled) {
+            if (receive) {
+              if (!value.can_receive()) {
+                slots->exceed(s, i, Bound::out);
+                return;
+              }
+              value.receive(act.from);
+              if (!s.is_bottom(slots->message_wait[act.message]))
+                s.set_bottom(slots->message_wait[act.message]); // first execution: owed no more
+            } else {
+              value.send();
+              Packet message;
+              message.kind = Kind::vn_message;
+              message.count = act.count;
+              message.last = act.last;
+              message.age = act.age; // D10: the VN message's id is the suggestion's oid
+              message.from = act.from;
+              if (!append(s, q.local_out, message))
+                slots->exceed(s, i, Bound::local_out);
+            }
+            q.value.store(s, value);
+            s[q.proposed] = false;
+            record();
+          } else if (!known && slots->config.record_always) {
+            record();
+          }
+          slots->set_completed(s, i, done);
+        });
+
+    // Internal ack-join_{i,h} (002:454–456): status = active ∧ x ∈ B_h ∧ pending-join >
+    // completed-join ∧ pending-actions = ∅ ∧ no VN action enabled (D32) →
+    // TOBcast-out ∪ {⟨join-ack, ⟨val, completed-actions⟩, pending-join⟩};
+    // completed-join ← pending-join.
+    a.internal("ack-join" + id)
+        .pre([slots, i, status_is](const State& s, const Params&) {
+          const PnSlots& q = slots->pns[i];
+          return status_is(s, Status::active) && is_empty(s, q.pending[0]) &&
+                 later_id(optional_value(s, q.pending_join), optional_value(s, q.completed_join)) &&
+                 (!slots->config.quiescent_ack || s[q.value.length] == 0);
+        })
+        .eff([slots, i](State& s, const Params&) {
+          const PnSlots& q = slots->pns[i];
+          Packet ack;
+          ack.kind = Kind::join_ack;
+          ack.age = s[q.pending_join];
+          ack.value = q.value.load(s).code(slots->config.pns);
+          ack.done = slots->completed(s, i);
+          if (!append(s, q.tob_out, ack))
+            slots->exceed(s, i, Bound::tob_out);
+          s[q.completed_join] = s[q.pending_join];
+        });
+
+    // Output TOBcast(m)_{i,h} (002:456–458) and TOBcast_i's transmission (002:348), one
+    // step (D12): "At the time of sending, a message is tagged with the sender's
+    // identifier, zone id, a sequence number, and a timestamp".
+    a.output("TOBcast" + id)
+        .pre([slots, i](const State& s, const Params&) {
+          return !slots->pn_past_bound(s, i) && s[slots->pns[i].up] &&
+                 !is_empty(s, slots->pns[i].tob_out[0]);
+        })
+        .eff([slots, i](State& s, const Params&) {
+          const PnSlots& q = slots->pns[i];
+          const Packet m = pop_front(s, q.tob_out);
+          const int sequence = s[q.sequence];
+          if (sequence == EmuConfig::sequence_capacity) {
+            slots->exceed(s, i, Bound::sequence);
+            return;
+          }
+          s[q.sequence] = sequence + 1;
+          lb_send(*slots, s, i, m, sequence);
+        });
+
+    // Output send(m)_{i,h} (002:416–418): local-out ≠ ∅ ∧ m = head(local-out); the VN's
+    // message goes out over LBcast with its id (D15, D20: no zone or status guard).
+    a.output("send" + id)
+        .pre([slots, i](const State& s, const Params&) {
+          return !slots->pn_past_bound(s, i) && s[slots->pns[i].up] &&
+                 !is_empty(s, slots->pns[i].local_out[0]);
+        })
+        .eff([slots, i](State& s, const Params&) {
+          lb_send(*slots, s, i, pop_front(s, slots->pns[i].local_out), 0);
+        });
+
+    // Output TOBcast-rcv(m)_{i,h} of TOBcast_i, input of VNE_i (002:456): the first packet
+    // in delivery order, exactly d_p + ε after its timestamp (D12d: later when it came
+    // late, only with ε = 0).
+    a.output("TOBcast-rcv" + id)
+        .pre([slots, i](const State& s, const Params&) {
+          const PnSlots& q = slots->pns[i];
+          return !slots->pn_past_bound(s, i) && s[q.up] && !is_empty(s, q.buffer[0].packet) &&
+                 s[q.buffer[0].age] >= slots->config.hold();
+        })
+        .eff([slots, i](State& s, const Params&) {
+          const PnSlots& q = slots->pns[i];
+          std::vector<Entry> entries = load_buffer(*slots, s, q);
+          const Packet m = entries.front().packet;
+          entries.erase(entries.begin());
+          store_buffer(s, q, entries);
+          const Status status = s[q.status];
+          switch (m.kind) {
+          case Kind::simulate_receive:
+          case Kind::simulate_send:
+            if (status == Status::listening || status == Status::active) {
+              Packet act = m;
+              act.value = 0;
+              act.done = {};
+              if (!append(s, q.pending, act))
+                slots->exceed(s, i, Bound::pending);
+            }
+            break;
+          case Kind::join_req:
+            if (later_id(m.age, optional_value(s, q.pending_join)))
+              s[q.pending_join] = m.age;
+            // D4: the then-branch the OCR lost, from 002:352.
+            if (status == Status::joining && m.age == optional_value(s, q.join_id))
+              s[q.status] = Status::listening;
+            break;
+          case Kind::join_ack: {
+            if (later_id(m.age, optional_value(s, q.completed_join)))
+              s[q.completed_join] = m.age;
+            const int join_id = optional_value(s, q.join_id);
+            if (status == Status::listening && join_id >= 0 && m.age <= join_id) {
+              s[q.status] = Status::active;
+              q.value.store(s, VnValue::from_code(m.value, slots->config.pns));
+              slots->set_completed(s, i, m.done);
+              s[q.proposed] = false;
+            }
+            break;
+          }
+          case Kind::reset: // D5: the VN's start state, whatever the status (as printed)
+            s[q.status] = Status::active;
+            clear(s, q.pending);
+            q.value.store(s, VnValue{});
+            slots->set_completed(s, i, Completed{});
+            s[q.proposed] = false;
+            break;
+          default:
+            break;
+          }
+        });
+
+    // Output lb-rcv(p)_i of LBcast (002:37): packet `slot` of PN_from's, to PN_i.
+    a.output("lb-rcv" + id, {{"from", 0, n - 1}, {"slot", 0, EmuConfig::flight_capacity - 1}})
+        .pre([slots, i](const State& s, const Params& m) {
+          if (slots->pn_past_bound(s, i) || !s[slots->pns[i].up])
+            return false;
+          const FlightSlots& f = slots->pns[m[0]].flight[m[1]];
+          return !is_empty(s, f.packet) && ((s[f.todo] >> i) & 1);
+        })
+        .eff([slots, i](State& s, const Params& m) {
+          const PnSlots& q = slots->pns[i];
+          const PnSlots& sender = slots->pns[m[0]];
+          std::vector<Flight> records = load_flight(s, sender);
+          Flight& record = records[m[1]];
+          record.todo &= ~(1 << i);
+          const Flight got = record;
+          if (record.todo == 0)
+            records.erase(records.begin() + m[1]);
+          store_flight(s, sender, records);
+          const Packet& p = got.packet;
+          if (through_tobcast(p.kind)) {
+            // TOBcast_i keeps it until ts + d_p + ε (one zone: every packet is for B_h).
+            std::vector<Entry> entries = load_buffer(*slots, s, q);
+            if (entries.size() == q.buffer.size()) {
+              slots->exceed(s, i, Bound::buffer);
+              return;
+            }
+            entries.push_back({p, got.age, m[0], got.sequence});
+            store_buffer(s, q, entries);
+          } else if (p.kind == Kind::client_message) {
+            // Input receive(m)_{i,h} (002:414): TOBcast-out ∪ {⟨simulate, ⟨receive, m⟩, ⊥⟩},
+            // no status guard; nothing while h = ⊥ (D14). The client drops it (002:85).
+            if (!s.is_bottom(q.zone)) {
+              Packet suggestion = p;
+              suggestion.kind = Kind::simulate_receive;
+              suggestion.age = -1;
+              if (!append(s, q.tob_out, suggestion))
+                slots->exceed(s, i, Bound::tob_out);
+            }
+          } else if (p.kind == Kind::vn_message) {
+            // The trivial client delivers a VN message once (D16); VNE_i drops its own
+            // zone's VN messages (D14).
+            see(*slots, s, i, Key{p.age, p.from});
+          }
+        });
+
+    // The environment: CN_i's send of a client message (vsend, §1.6), fail_i and
+    // recover_i (002:35), anywhere or only where time may pass (D24). They are the outputs
+    // of the environment within budgets (inputs of PN_i, always enabled there).
+    const auto env_may = [slots, i, inputs_anywhere](const State& s) {
+      return !slots->pn_past_bound(s, i) && (inputs_anywhere || !urgent(*slots, s));
+    };
+    a.output("cn-send" + id)
+        .pre([slots, i, env_may](const State& s, const Params&) {
+          const PnSlots& q = slots->pns[i];
+          return env_may(s) && s[q.up] && s[slots->messages_left] > 0 && !s[q.sent_now];
+        })
+        .eff([slots, i](State& s, const Params&) {
+          const int message = slots->config.messages - s[slots->messages_left];
+          s[slots->messages_left] = s[slots->messages_left] - 1;
+          s[slots->pns[i].sent_now] = true;
+          // Theorem 2's d_v (§3.2): VN_0 owes its receive while it stays alive; the next
+          // tick drops the debt if VN_0 is failed there (alive "throughout" is asked).
+          s[slots->message_wait[message]] = 0;
+          Packet m;
+          m.kind = Kind::client_message;
+          m.message = message;
+          m.from = i;
+          lb_send(*slots, s, i, m, 0);
+        });
+    a.output("fail" + id)
+        .pre([slots, i, env_may](const State& s, const Params&) {
+          return env_may(s) && s[slots->pns[i].up] && s[slots->fails_left] > 0;
+        })
+        .eff([slots, i](State& s, const Params&) {
+          s[slots->fails_left] = s[slots->fails_left] - 1;
+          reset_pn(*slots, s, i);
+          // LBcast owes nothing to a failed PN; its own packets stay in flight (D25).
+          for (const PnSlots& sender : slots->pns) {
+            std::vector<Flight> records = load_flight(s, sender), kept;
+            for (Flight f : records) {
+              f.todo &= ~(1 << i);
+              if (f.todo != 0)
+                kept.push_back(f);
+            }
+            store_flight(s, sender, kept);
+          }
+        });
+    a.output("recover" + id)
+        .pre([slots, i, env_may](const State& s, const Params&) {
+          return env_may(s) && !s[slots->pns[i].up];
+        })
+        .eff([slots, i](State& s, const Params&) { s[slots->pns[i].up] = true; });
+  }
+
+  declare_footprints(a, slots);
+  a.trajectories([slots](State& s) { tick(*slots, s); },
+                 [slots](const State& s) { return urgent(*slots, s); });
+  return {std::move(a), slots};
+}
+
+} // namespace vn_emulation

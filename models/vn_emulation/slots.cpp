@@ -1,0 +1,247 @@
+#include "models/vn_emulation/slots.hpp"
+
+#include <algorithm>
+#include <string>
+
+namespace vn_emulation {
+
+namespace {
+
+std::string at(const std::string& name, int index) {
+  return name + "[" + std::to_string(index) + "]";
+}
+
+// Ages of timestamps: 0..cap, ⊥ for none (D23).
+Variable<int> age_variable(tioa::Automaton& a, const std::string& name, const EmuConfig& c) {
+  return a.optional_integer(name, 0, c.age_cap());
+}
+
+PacketSlots packet_slots(tioa::Automaton& a, const std::string& name, const EmuConfig& c,
+                         bool payload) {
+  const int clients = c.pns;
+  PacketSlots p;
+  p.kind = a.integer(name + ".kind", 0, kinds - 1, 0);
+  p.message = a.integer(name + ".message", 0, std::max(c.messages - 1, 0), 0);
+  p.from = a.integer(name + ".from", 0, clients - 1, 0);
+  p.count = a.integer(name + ".count", 0, EmuConfig::counter_modulus - 1, 0);
+  p.last = a.integer(name + ".last", 0, clients - 1, 0);
+  p.age = age_variable(a, name + ".age", c);
+  p.payload = payload;
+  if (payload) {
+    p.value = a.integer(name + ".val", 0, VnValue::codes(clients) - 1, 0);
+    p.received = a.integer(name + ".completed", 0, (1 << c.messages) - 1, 0);
+    for (int k = 0; k < EmuConfig::key_capacity; ++k) {
+      p.key_age[k] = age_variable(a, at(name + ".key_age", k), c);
+      p.key_from[k] = a.integer(at(name + ".key_from", k), 0, clients - 1, 0);
+    }
+  }
+  return p;
+}
+
+ValueSlots value_slots(tioa::Automaton& a, const std::string& name, int clients) {
+  ValueSlots v;
+  v.count = a.integer(name + ".count", 0, EmuConfig::counter_modulus - 1, 0);
+  v.last = a.optional_integer(name + ".last", 0, clients - 1);
+  v.length = a.integer(name + ".out_length", 0, EmuConfig::out_capacity, 0);
+  for (int k = 0; k < EmuConfig::out_capacity; ++k) {
+    v.out_count[k] = a.integer(at(name + ".out_count", k), 0, EmuConfig::counter_modulus - 1, 0);
+    v.out_last[k] = a.integer(at(name + ".out_last", k), 0, clients - 1, 0);
+  }
+  v.sseq = a.integer(name + ".sseq", 0, EmuConfig::send_modulus - 1, 0);
+  return v;
+}
+
+} // namespace
+
+bool Completed::has(const Key& k) const {
+  return std::find(sends.begin(), sends.end(), k) != sends.end();
+}
+
+bool Completed::add(const Key& k) {
+  if (has(k))
+    return true;
+  const auto free =
+      std::find_if(sends.begin(), sends.end(), [](const Key& e) { return e.age < 0; });
+  if (free == sends.end())
+    return false;
+  *free = k;
+  // One order for one set: by age, then proposer, the empty places last.
+  std::sort(sends.begin(), sends.end(), [](const Key& x, const Key& y) {
+    const int ax = x.age < 0 ? 1 << 20 : x.age, ay = y.age < 0 ? 1 << 20 : y.age;
+    return ax != ay ? ax < ay : x.from < y.from;
+  });
+  return true;
+}
+
+Packet PacketSlots::load(const State& s) const {
+  Packet p;
+  p.kind = static_cast<Kind>(static_cast<int>(s[kind]));
+  p.message = s[message];
+  p.from = s[from];
+  p.count = s[count];
+  p.last = s[last];
+  p.age = optional_value(s, age);
+  if (payload) {
+    p.value = s[value];
+    p.done.received = s[received];
+    for (int k = 0; k < EmuConfig::key_capacity; ++k)
+      p.done.sends[k] = {optional_value(s, key_age[k]), s[key_from[k]]};
+  }
+  return p;
+}
+
+void PacketSlots::store(State& s, const Packet& p) const {
+  s[kind] = static_cast<int>(p.kind);
+  s[message] = p.message;
+  s[from] = p.from;
+  s[count] = p.count;
+  s[last] = p.last;
+  set_optional(s, age, p.age);
+  if (payload) {
+    s[value] = p.value;
+    s[received] = p.done.received;
+    for (int k = 0; k < EmuConfig::key_capacity; ++k) {
+      set_optional(s, key_age[k], p.done.sends[k].age);
+      s[key_from[k]] = p.done.sends[k].from;
+    }
+  }
+}
+
+VnValue ValueSlots::load(const State& s) const {
+  VnValue v;
+  v.count = s[count];
+  v.last = optional_value(s, last);
+  v.length = s[length];
+  for (int k = 0; k < EmuConfig::out_capacity; ++k) {
+    v.out_count[k] = s[out_count[k]];
+    v.out_last[k] = s[out_last[k]];
+  }
+  v.sseq = s[sseq];
+  return v;
+}
+
+void ValueSlots::store(State& s, const VnValue& v) const {
+  s[count] = v.count;
+  set_optional(s, last, v.last);
+  s[length] = v.length;
+  for (int k = 0; k < EmuConfig::out_capacity; ++k) {
+    s[out_count[k]] = v.out_count[k];
+    s[out_last[k]] = v.out_last[k];
+  }
+  s[sseq] = v.sseq;
+}
+
+Completed Slots::completed(const State& s, int pn) const {
+  const PnSlots& p = pns[pn];
+  Completed c;
+  c.received = s[p.received];
+  for (int k = 0; k < EmuConfig::key_capacity; ++k)
+    c.sends[k] = {optional_value(s, p.key_age[k]), s[p.key_from[k]]};
+  return c;
+}
+
+void Slots::set_completed(State& s, int pn, const Completed& c) const {
+  const PnSlots& p = pns[pn];
+  s[p.received] = c.received;
+  for (int k = 0; k < EmuConfig::key_capacity; ++k) {
+    set_optional(s, p.key_age[k], c.sends[k].age);
+    s[p.key_from[k]] = c.sends[k].from;
+  }
+}
+
+Entry Slots::entry(const State& s, const BufferSlots& b) const {
+  return {b.packet.load(s), optional_value(s, b.age), s[b.sender], s[b.sequence]};
+}
+
+const char* to_string(Bound bound) {
+  static const char* const names[] = {"none",        "pending-actions",  "TOBcast-out",
+                                      "local-out",   "LBcast in flight", "TOBcast's buffer",
+                                      "send keys",   "seen ids",         "sequence numbers",
+                                      "the VN's out"};
+  return names[static_cast<int>(bound)];
+}
+
+bool Slots::past_bound(const State& s) const {
+  return bound_met(s) != Bound::none;
+}
+
+Bound Slots::bound_met(const State& s) const {
+  for (const PnSlots& p : pns)
+    if (s[p.bound_met] != Bound::none)
+      return s[p.bound_met];
+  return Bound::none;
+}
+
+std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
+  auto slots = std::make_shared<Slots>();
+  slots->config = c;
+  const bool warm = c.start == Start::warm;
+  for (int i = 0; i < c.pns; ++i) {
+    const std::string pn = "PN_" + std::to_string(i);
+    PnSlots p;
+    p.block.offset = a.layout().bits();
+    p.up = a.boolean(pn + ".up", true);
+    p.status = a.enumeration<Status>(pn + ".status", {"idle", "joining", "listening", "active"},
+                                     Status::active);
+    p.zone = a.optional_integer(pn + ".h", 0, 0, warm ? std::optional<int>(0) : std::nullopt);
+    p.value = value_slots(a, pn + ".val", c.pns);
+    p.pending_join = age_variable(a, pn + ".pending_join", c);
+    p.completed_join = age_variable(a, pn + ".completed_join", c);
+    p.join_id = age_variable(a, pn + ".join_id", c);
+    p.reset_sent = a.boolean(pn + ".reset_sent", false);
+    p.proposed = a.boolean(pn + ".proposed", false);
+    p.received = a.integer(pn + ".completed", 0, (1 << c.messages) - 1, 0);
+    for (int k = 0; k < EmuConfig::key_capacity; ++k) {
+      p.key_age[k] = age_variable(a, at(pn + ".key_age", k), c);
+      p.key_from[k] = a.integer(at(pn + ".key_from", k), 0, c.pns - 1, 0);
+    }
+    for (int k = 0; k < EmuConfig::pending_capacity; ++k)
+      p.pending.push_back(packet_slots(a, at(pn + ".pending", k), c, false));
+    for (int k = 0; k < EmuConfig::tob_out_capacity; ++k)
+      p.tob_out.push_back(packet_slots(a, at(pn + ".tob_out", k), c, true));
+    for (int k = 0; k < EmuConfig::local_out_capacity; ++k)
+      p.local_out.push_back(packet_slots(a, at(pn + ".local_out", k), c, false));
+    p.sequence = a.integer(pn + ".seq", 0, EmuConfig::sequence_capacity, 0);
+    for (int k = 0; k < EmuConfig::buffer_capacity; ++k) {
+      const std::string name = at(pn + ".buffer", k);
+      p.buffer.push_back({packet_slots(a, name, c, true), age_variable(a, name + ".ts_age", c),
+                          a.integer(name + ".sender", 0, c.pns - 1, 0),
+                          a.integer(name + ".seq", 0, EmuConfig::sequence_capacity, 0)});
+    }
+    for (int k = 0; k < EmuConfig::seen_capacity; ++k) {
+      p.seen_age[k] = age_variable(a, at(pn + ".seen_age", k), c);
+      p.seen_from[k] = a.integer(at(pn + ".seen_from", k), 0, c.pns - 1, 0);
+    }
+    p.sent_now = a.boolean(pn + ".sent_now", false);
+    p.startup_wait = a.integer(pn + ".startup_wait", 0, 2 * c.stated_d_r(), 0);
+    p.bound_met = a.enumeration<Bound>(pn + ".bound_met",
+                                       {"none", "pending", "tob_out", "local_out", "flight",
+                                        "buffer", "keys", "seen", "sequence", "out"},
+                                       Bound::none);
+    p.block.bits = a.layout().bits() - p.block.offset;
+    slots->pns.push_back(std::move(p));
+  }
+  // LBcast's packets, a block per sender, apart from the PNs' own variables so that a
+  // receiver's step touches the sender's packets and not its VNE.
+  for (int i = 0; i < c.pns; ++i) {
+    PnSlots& p = slots->pns[i];
+    p.flight_block.offset = a.layout().bits();
+    for (int k = 0; k < EmuConfig::flight_capacity; ++k) {
+      const std::string name = at("LBcast.from_" + std::to_string(i), k);
+      p.flight.push_back({packet_slots(a, name, c, true), a.integer(name + ".elapsed", 0, c.d_p, 0),
+                          a.integer(name + ".todo", 0, (1 << c.pns) - 1, 0),
+                          a.integer(name + ".seq", 0, EmuConfig::sequence_capacity, 0)});
+    }
+    p.flight_block.bits = a.layout().bits() - p.flight_block.offset;
+  }
+  slots->messages_left = a.integer("Env.messages_left", 0, c.messages, c.messages);
+  slots->fails_left = a.integer("Env.fails_left", 0, c.fails, c.fails);
+  slots->task_wait = a.integer("Monitor.task_wait", 0, c.age_cap(), 0);
+  slots->task_sseq = a.optional_integer("Monitor.task_sseq", 0, EmuConfig::send_modulus - 1);
+  for (int m = 0; m < c.messages; ++m)
+    slots->message_wait.push_back(
+        a.optional_integer(at("Monitor.message_wait", m), 0, c.age_cap()));
+  return slots;
+}
+
+} // namespace vn_emulation

@@ -1,0 +1,184 @@
+#pragma once
+// The state of the one-zone emulation, variable by variable (docs/design/vn-emulation.md
+// §1.3–1.6; README "State"), with value types to read and write its records whole.
+//
+// Every timestamp is kept as an age (now − ts), saturating at EmuConfig::age_cap() (D23):
+// there is no absolute time in the state. An optional value is -1 for ⊥ in the value
+// types.
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "models/vn_emulation/config.hpp"
+#include "models/vn_emulation/vn_counter.hpp"
+#include "tioa/automaton.hpp"
+
+namespace vn_emulation {
+
+using tioa::State;
+using tioa::Variable;
+
+// What a TOBcast message, a pending action or a physical packet is (D15).
+enum class Kind {
+  none,             // an empty place
+  simulate_receive, // ⟨simulate, ⟨receive, m⟩, ⊥⟩, m the client message `message` of `from`
+  simulate_send,    // ⟨simulate, ⟨send, ⟨count, last⟩⟩, oid = ⟨age, from⟩⟩
+  join_req,         // ⟨join-req, ⊥, join-id = age⟩
+  join_ack,         // ⟨join-ack, ⟨val, completed-actions⟩, id = age⟩
+  reset,            // ⟨reset⟩
+  client_message,   // a CN's virtual message ⟨vmsg, cn from, id = message⟩ (not TOBcast)
+  vn_message // VN_h's virtual message ⟨vmsg, vn h, id = ⟨age, from⟩, ⟨count, last⟩⟩
+};
+constexpr int kinds = 8;
+inline bool through_tobcast(Kind k) {
+  return k != Kind::none && k != Kind::client_message && k != Kind::vn_message;
+}
+
+// A send key of completed-actions: the oid ⟨age, proposer⟩ of a simulated send (receive
+// keys are the client messages' ids, a bit each: they are never reused, so they need no
+// age, D10).
+struct Key {
+  int age = -1, from = 0;
+  bool operator==(const Key&) const = default;
+};
+using Keys = std::array<Key, EmuConfig::key_capacity>;
+
+// completed-actions (D3).
+struct Completed {
+  int received = 0; // bit c: the receive of client message c
+  Keys sends{};
+  bool operator==(const Completed&) const = default;
+  bool has(const Key& k) const;
+  // Adds k; false when there is no room (the model's bound).
+  bool add(const Key& k);
+};
+
+struct Packet {
+  Kind kind = Kind::none;
+  int message = 0, from = 0, count = 0, last = 0;
+  int age = -1;   // the oid's or id's age; -1 when it has none
+  int value = 0;  // join-ack: VnValue::code of the payload's val
+  Completed done; // join-ack: the payload's completed-actions
+  bool operator==(const Packet&) const = default;
+  bool empty() const { return kind == Kind::none; }
+};
+
+struct PacketSlots {
+  Variable<int> kind, message, from, count, last, age;
+  // Only where join-acks can be (TOBcast-out, LBcast, TOBcast's buffer).
+  bool payload = false;
+  Variable<int> value, received;
+  std::array<Variable<int>, EmuConfig::key_capacity> key_age, key_from;
+
+  Packet load(const State& s) const;
+  void store(State& s, const Packet& p) const;
+};
+
+// An LBcast packet in flight from one sender (002:37): its age since the send (0..d_p),
+// the PNs that may still receive it, and, for TOBcast packets, the sender's sequence
+// number in that instant (the timestamp is the send time, so the age, D12).
+struct FlightSlots {
+  PacketSlots packet;
+  Variable<int> age, todo, sequence;
+};
+
+// An entry of TOBcast_i's hold buffer: ⟨ts, jr, sender, seq, m⟩ (D12).
+struct BufferSlots {
+  PacketSlots packet;
+  Variable<int> age, sender, sequence;
+};
+
+struct Entry {
+  Packet packet;
+  int age = 0, sender = 0, sequence = 0;
+};
+
+// VN_h's state as a replica holds it.
+struct ValueSlots {
+  Variable<int> count, last, length, sseq;
+  std::array<Variable<int>, EmuConfig::out_capacity> out_count, out_last;
+  VnValue load(const State& s) const;
+  void store(State& s, const VnValue& v) const;
+};
+
+enum class Status { idle, joining, listening, active }; // D1: idle is used, not declared
+
+// Which of the model's bounds a step met (EmuConfig): the state is a dead end there.
+enum class Bound { none, pending, tob_out, local_out, flight, buffer, keys, seen, sequence, out };
+const char* to_string(Bound bound);
+
+// A block of contiguous bits of the state, for footprints.
+struct Block {
+  std::uint32_t offset = 0, bits = 0;
+};
+
+// PN_i = CN_i ‖ VNE_i ‖ TOBcast_i (D41), and the LBcast packets it sent.
+struct PnSlots {
+  Variable<bool> up;                                   // mode active (002:35)
+  Variable<Status> status;                             // 002:405
+  Variable<int> zone;                                  // h ∈ H ∪ {⊥}; one zone: 0 or ⊥
+  ValueSlots value;                                    // val
+  Variable<int> pending_join, completed_join, join_id; // ages, ⊥ below every id (D21)
+  Variable<bool> reset_sent, proposed;                 // D7, D6
+  Variable<int> received;                              // completed-actions: receive keys (bits)
+  std::array<Variable<int>, EmuConfig::key_capacity> key_age, key_from; // send keys
+  std::vector<PacketSlots> pending;                                     // pending-actions
+  std::vector<PacketSlots> tob_out;                                     // TOBcast-out
+  std::vector<PacketSlots> local_out; // local-out (VN messages to transmit)
+  Variable<int> sequence;             // TOBcast_i's next sequence number (D12c)
+  std::vector<BufferSlots> buffer;    // TOBcast_i's held packets, in delivery order
+  std::vector<FlightSlots> flight;    // LBcast: this PN's packets in flight
+  std::array<Variable<int>, EmuConfig::seen_capacity> seen_age, seen_from; // CN_i (D16)
+  Variable<bool> sent_now; // CN_i has sent in this instant (§1.6)
+  // Theorem 2's monitors (ghosts, §3.2): quanta PN_i has stood in a zone whose VN is failed.
+  Variable<int> startup_wait;
+  // The model's bound that one of this PN's steps met (Bound::none: none). Kept per PN so
+  // that a step reads only its own PN's (for the zero-time reduction); any one set makes
+  // the state a dead end of the model (Slots::past_bound).
+  Variable<Bound> bound_met;
+  Block block;        // every variable above but the flight
+  Block flight_block; // the flight
+};
+
+struct Slots {
+  EmuConfig config;
+  std::vector<PnSlots> pns;
+  Variable<int> messages_left, fails_left;
+  // Monitors: the VN's send task (quanta enabled without a send, and the send count it
+  // saw at the last tick); per client message, quanta since its send while VN_h owed it.
+  Variable<int> task_wait, task_sseq;
+  std::vector<Variable<int>> message_wait;
+
+  Completed completed(const State& s, int pn) const;
+  void set_completed(State& s, int pn, const Completed& c) const;
+  Entry entry(const State& s, const BufferSlots& b) const;
+  // Some step met one of the model's bounds: the state stands for continuations the model
+  // cannot hold (no check reads past it).
+  bool past_bound(const State& s) const;
+  // The first bound met, for reports (Bound::none when none).
+  Bound bound_met(const State& s) const;
+  bool pn_past_bound(const State& s, int pn) const { return s[pns[pn].bound_met] != Bound::none; }
+  // Records that a step of PN_pn met `bound` (the first one met stays).
+  void exceed(State& s, int pn, Bound bound) const {
+    if (s[pns[pn].bound_met] == Bound::none)
+      s[pns[pn].bound_met] = bound;
+  }
+};
+
+// Declares every variable of the emulation in `a`.
+std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& config);
+
+// Small helpers for optional integers (-1 for ⊥).
+inline int optional_value(const State& s, const Variable<int>& v) {
+  return s.is_bottom(v) ? -1 : static_cast<int>(s[v]);
+}
+inline void set_optional(State& s, const Variable<int>& v, int value) {
+  if (value < 0)
+    s.set_bottom(v);
+  else
+    s[v] = value;
+}
+
+} // namespace vn_emulation

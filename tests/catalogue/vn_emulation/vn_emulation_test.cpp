@@ -1,0 +1,96 @@
+// The properties of `vn-emulation` (models/vn_emulation/README.md) on one zone with two
+// physical nodes: replica consistency and Theorem 2's figures, the start-up time tight at
+// 4d_p + 5ε for three (d_p, ε), and d_v = 2d_p + ε broken with a trace that replays
+// (finding E1). Counts pinned (no reduction).
+#include <catch2/catch.hpp>
+
+#include "catalogue/registry.hpp"
+#include "catalogue/vn_emulation.hpp"
+#include "checker/property.hpp"
+#include "checker/trace.hpp"
+
+namespace vn_emulation_test {
+
+struct Run {
+  checker::PropertyResult result;
+  tioa::Automaton system;
+};
+
+Run run(const std::string& property, const std::vector<std::string>& settings,
+        checker::ExploreOptions options = {}) {
+  const catalogue::ModelDefinition def = catalogue::vn_emulation_definition();
+  const catalogue::ModelInstance m = def.build(catalogue::resolve_params(def, settings));
+  for (const auto& p : m.properties)
+    if (p.name == property)
+      return {checker::run_property(m.system, p, options), m.system};
+  FAIL("no property " << property);
+  return {{}, m.system};
+}
+
+std::string figure(const checker::PropertyResult& r, const std::string& name) {
+  for (const auto& [key, value] : r.figures)
+    if (key == name)
+      return value;
+  return "";
+}
+
+} // namespace vn_emulation_test
+
+namespace et = vn_emulation_test;
+
+TEST_CASE("vn-emulation, warm start, one message, one fail: replicas agree and every figure "
+          "is within Theorem 2's",
+          "[vn-emulation]") {
+  const auto replicas = et::run("replica-consistency", {}).result;
+  CHECK(replicas.verdict == checker::Verdict::holds);
+  CHECK(replicas.states == 178'652);
+  CHECK(replicas.edges == 544'084);
+  const auto theorem = et::run("theorem-2", {}).result;
+  CHECK(theorem.verdict == checker::Verdict::holds);
+  CHECK(et::figure(theorem, "d_MMT measured") == "2");
+  CHECK(et::figure(theorem, "d_v measured") == "3");
+  CHECK(et::figure(theorem, "d_v stated") == "3 (2d_p + eps)");
+  CHECK(et::run("no-timelock", {}).result.verdict == checker::Verdict::holds);
+}
+
+TEST_CASE("vn-emulation, cold start: the VN starts exactly d_r = 4d_p + 5eps after time 0",
+          "[vn-emulation]") {
+  // (d_p, ε) = (1, 1), (2, 1), (1, 2): 9, 13, 14, the stated figure each time.
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"start=cold", "messages=0", "fails=0"}, "9"},
+      {{"start=cold", "messages=0", "fails=0", "d_p=2"}, "13"},
+      {{"start=cold", "messages=0", "fails=0", "eps=2"}, "14"}};
+  for (const auto& [settings, d_r] : cases) {
+    const et::Run r = et::run("theorem-2", settings);
+    CHECK(r.result.verdict == checker::Verdict::holds);
+    CHECK(et::figure(r.result, "d_r measured") == d_r);
+    CHECK(et::figure(r.result, "d_r stated").rfind(d_r + " ", 0) == 0);
+    REQUIRE(r.result.trace);
+    CHECK(r.result.trace_kind == "worst-case");
+    CHECK(checker::replay(tioa::SuccessorGenerator(r.system), *r.result.trace, nullptr));
+  }
+  CHECK(et::run("theorem-2", {"start=cold", "messages=0", "fails=0"}).result.states == 424);
+}
+
+TEST_CASE("vn-emulation E1: with two fails a client message reaches the VN later than "
+          "d_v = 2d_p + eps",
+          "[vn-emulation][slow]") {
+  checker::ExploreOptions bounded;
+  bounded.limits.max_states = 3'000'000; // the trace is 23 steps deep; the whole space is 16M+
+  const et::Run r = et::run("theorem-2", {"fails=2", "inputs=ticks"}, bounded);
+  CHECK(r.result.verdict == checker::Verdict::violated);
+  CHECK_THAT(r.result.message, Catch::StartsWith("d_v exceeds Theorem 2's 2d_p + eps = 3"));
+  REQUIRE(r.result.trace);
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(r.system), *r.result.trace, &why));
+  INFO(why);
+}
+
+TEST_CASE("vn-emulation: a model bound met makes a check incomplete, never holds",
+          "[vn-emulation][slow]") {
+  // A cold start with a client message fills TOBcast's buffer of 6 at the reset instant.
+  const auto r = et::run("replica-consistency", {"start=cold", "messages=1", "fails=0"}).result;
+  CHECK(r.verdict == checker::Verdict::incomplete);
+  CHECK_THAT(r.message, Catch::Contains("the bound on TOBcast's buffer"));
+  CHECK(r.trace_kind == "bound");
+}
