@@ -226,6 +226,8 @@ void tick(const Slots& slots, State& s) {
       advance_packet(s, b.packet);
     }
     for (const FlightSlots& f : p.flight) {
+      if (is_empty(s, f.packet))
+        continue; // an empty place stays all zero (one state for one situation)
       s.advance(f.age);
       advance_packet(s, f.packet);
     }

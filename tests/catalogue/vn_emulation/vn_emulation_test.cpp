@@ -43,8 +43,8 @@ TEST_CASE("vn-emulation, warm start, one message, one fail: replicas agree and e
           "[vn-emulation]") {
   const auto replicas = et::run("replica-consistency", {}).result;
   CHECK(replicas.verdict == checker::Verdict::holds);
-  CHECK(replicas.states == 178'652);
-  CHECK(replicas.edges == 544'084);
+  CHECK(replicas.states == 120'790);
+  CHECK(replicas.edges == 383'758);
   const auto theorem = et::run("theorem-2", {}).result;
   CHECK(theorem.verdict == checker::Verdict::holds);
   CHECK(et::figure(theorem, "d_MMT measured") == "2");
@@ -69,7 +69,7 @@ TEST_CASE("vn-emulation, cold start: the VN starts exactly d_r = 4d_p + 5eps aft
     CHECK(r.result.trace_kind == "worst-case");
     CHECK(checker::replay(tioa::SuccessorGenerator(r.system), *r.result.trace, nullptr));
   }
-  CHECK(et::run("theorem-2", {"start=cold", "messages=0", "fails=0"}).result.states == 424);
+  CHECK(et::run("theorem-2", {"start=cold", "messages=0", "fails=0"}).result.states == 325);
 }
 
 TEST_CASE("vn-emulation E1: with two fails a client message reaches the VN later than "
