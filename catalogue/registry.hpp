@@ -59,6 +59,18 @@ struct ParamSpec {
 
 using ParamValues = std::map<std::string, ParamValue>;
 
+// A property with a check of its own (checker::PropertyKind::custom).
+inline checker::Property
+custom_property(std::string name, std::string description,
+                std::function<checker::PropertyResult(const checker::ExploreOptions&)> run) {
+  checker::Property p;
+  p.name = std::move(name);
+  p.description = std::move(description);
+  p.kind = checker::PropertyKind::custom;
+  p.run = std::move(run);
+  return p;
+}
+
 // The whole-number parameter `name` (declared with ParamKind::integer) as an int.
 inline int whole(const ParamValues& p, const char* name) {
   return static_cast<int>(p.at(name).integer());

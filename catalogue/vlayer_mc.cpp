@@ -130,63 +130,62 @@ ModelDefinition vlayer_mc_definition() {
     const vlayer_mc::ArbitraryStarts starts{
         .samples = static_cast<std::uint64_t>(p.at("samples").integer()),
         .seed = static_cast<std::uint64_t>(p.at("seed").integer())};
-    const auto custom = [](std::string name, std::string description,
-                           std::function<checker::PropertyResult(const checker::ExploreOptions&)>
-                               run) {
-      return checker::Property{
-          std::move(name), std::move(description), checker::PropertyKind::custom, {}, "", {}, "",
-          std::move(run)};
-    };
     checker::Property no_timelock =
-        custom("no-timelock", "every reachable state has an action or a tick",
-               [=](const checker::ExploreOptions& o) {
-                 checker::PropertyResult r = checker::check_no_deadlock(system, o);
-                 vlayer_mc::note_round_length(c, r);
-                 return r;
-               });
+        custom_property("no-timelock", "every reachable state has an action or a tick",
+                        [=](const checker::ExploreOptions& o) {
+                          checker::PropertyResult r = checker::check_no_deadlock(system, o);
+                          vlayer_mc::note_round_length(c, r);
+                          return r;
+                        });
     no_timelock.fingerprint_store = true; // check_no_deadlock alone
     m.properties = {
         std::move(no_timelock),
-        custom("l1mc-closure", "L1MC is closed under steps and ticks (seed 000 Def 7.1, §7.1)",
-               [=](const checker::ExploreOptions& o) {
-                 return vlayer_mc::check_l1mc_closure(c, system, window, o);
-               }),
-        custom("reset-in-l1mc", "every ResetMC state is in L1MC (seed 000 Def 7.2)",
-               [=](const checker::ExploreOptions& o) {
-                 return vlayer_mc::check_reset_in_l1mc(c, system, window, o);
-               }),
-        custom("lmc-closure", "LMC, the states reachable from ResetMC, is a legal set inside L1MC",
-               [=](const checker::ExploreOptions& o) {
-                 return vlayer_mc::check_lmc_closure(c, layer, window, o);
-               }),
-        custom("lemma-7.3", "VLNodes[MC] stabilises to L1MC in time t > eps_sample (seed 000 §7.2)",
-               [=](const checker::ExploreOptions& o) {
-                 return vlayer_mc::check_lemma_7_3(c, window, starts, o);
-               }),
-        custom("lemma-7.4", "from L1MC, in LMC within delta + d + e (seed 000 §7.2)",
-               [=](const checker::ExploreOptions& o) {
-                 return vlayer_mc::check_lemma_7_4(c, window, starts, o);
-               }),
-        custom("theorem-7.5", "VLNodes[MC] stabilises to LMC in delta + d + e + eps_sample",
-               [=](const checker::ExploreOptions& o) {
-                 return vlayer_mc::check_theorem_7_5(c, window, starts, o);
-               }),
-        custom("lemma-7.6", "R_MC is a simulation relation for VLayer[MC] (seed 000 §7.3)",
-               [=](const checker::ExploreOptions& o) {
-                 return vlayer_mc::check_lemma_7_6(c, layer, window, o, reading);
-               }),
-        custom("lemma-7.7", "each ResetMC state is R_MC-related to a reachable state (§7.3)",
-               [=](const checker::ExploreOptions& o) {
-                 return vlayer_mc::check_lemma_7_7(c, layer, window, o, reading);
-               }),
-        custom("theorem-7.8", "the traces stabilise to reachable traces of R(VLayer[MC]) (§7.3)",
-               [=](const checker::ExploreOptions& o) {
-                 // In the order of the paper's argument, each within the property's limits.
-                 const auto into_lmc = vlayer_mc::check_theorem_7_5(c, window, starts, o);
-                 const auto related = vlayer_mc::check_lemma_7_7(c, layer, window, o, reading);
-                 const auto simulation = vlayer_mc::check_lemma_7_6(c, layer, window, o, reading);
-                 return vlayer_mc::theorem_7_8(into_lmc, simulation, related);
-               })};
+        custom_property("l1mc-closure",
+                        "L1MC is closed under steps and ticks (seed 000 Def 7.1, §7.1)",
+                        [=](const checker::ExploreOptions& o) {
+                          return vlayer_mc::check_l1mc_closure(c, system, window, o);
+                        }),
+        custom_property("reset-in-l1mc", "every ResetMC state is in L1MC (seed 000 Def 7.2)",
+                        [=](const checker::ExploreOptions& o) {
+                          return vlayer_mc::check_reset_in_l1mc(c, system, window, o);
+                        }),
+        custom_property("lmc-closure",
+                        "LMC, the states reachable from ResetMC, is a legal set inside L1MC",
+                        [=](const checker::ExploreOptions& o) {
+                          return vlayer_mc::check_lmc_closure(c, layer, window, o);
+                        }),
+        custom_property("lemma-7.3",
+                        "VLNodes[MC] stabilises to L1MC in time t > eps_sample (seed 000 §7.2)",
+                        [=](const checker::ExploreOptions& o) {
+                          return vlayer_mc::check_lemma_7_3(c, window, starts, o);
+                        }),
+        custom_property("lemma-7.4", "from L1MC, in LMC within delta + d + e (seed 000 §7.2)",
+                        [=](const checker::ExploreOptions& o) {
+                          return vlayer_mc::check_lemma_7_4(c, window, starts, o);
+                        }),
+        custom_property("theorem-7.5",
+                        "VLNodes[MC] stabilises to LMC in delta + d + e + eps_sample",
+                        [=](const checker::ExploreOptions& o) {
+                          return vlayer_mc::check_theorem_7_5(c, window, starts, o);
+                        }),
+        custom_property("lemma-7.6", "R_MC is a simulation relation for VLayer[MC] (seed 000 §7.3)",
+                        [=](const checker::ExploreOptions& o) {
+                          return vlayer_mc::check_lemma_7_6(c, layer, window, o, reading);
+                        }),
+        custom_property("lemma-7.7",
+                        "each ResetMC state is R_MC-related to a reachable state (§7.3)",
+                        [=](const checker::ExploreOptions& o) {
+                          return vlayer_mc::check_lemma_7_7(c, layer, window, o, reading);
+                        }),
+        custom_property(
+            "theorem-7.8", "the traces stabilise to reachable traces of R(VLayer[MC]) (§7.3)",
+            [=](const checker::ExploreOptions& o) {
+              // In the order of the paper's argument, each within the property's limits.
+              const auto into_lmc = vlayer_mc::check_theorem_7_5(c, window, starts, o);
+              const auto related = vlayer_mc::check_lemma_7_7(c, layer, window, o, reading);
+              const auto simulation = vlayer_mc::check_lemma_7_6(c, layer, window, o, reading);
+              return vlayer_mc::theorem_7_8(into_lmc, simulation, related);
+            })};
     return m;
   };
   // Each well under a few seconds (tests/catalogue/vlayer_mc/*_test.cpp pin the counts).

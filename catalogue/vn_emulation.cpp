@@ -60,26 +60,19 @@ ModelDefinition vn_emulation_definition() {
     const auto slots = e.slots;
     m.beyond_bound = [slots](const tioa::State& s) { return slots->past_bound(s); };
     m.bound_name = "the model's bounds on its queues and sets (models/vn_emulation/config.hpp)";
-    const auto custom = [](std::string name, std::string description,
-                           std::function<checker::PropertyResult(const checker::ExploreOptions&)>
-                               run) {
-      return checker::Property{
-          std::move(name), std::move(description), checker::PropertyKind::custom, {}, "", {}, "",
-          std::move(run)};
-    };
-    checker::Property no_timelock = custom(
+    checker::Property no_timelock = custom_property(
         "no-timelock", "every reachable state has an action or a tick",
         [=](const checker::ExploreOptions& o) { return vn_emulation::check_no_timelock(e, o); });
     checker::Property replicas =
-        custom("replica-consistency", "the active replicas agree where time passes",
-               [=](const checker::ExploreOptions& o) {
-                 return vn_emulation::check_replica_consistency(e, o);
-               });
+        custom_property("replica-consistency", "the active replicas agree where time passes",
+                        [=](const checker::ExploreOptions& o) {
+                          return vn_emulation::check_replica_consistency(e, o);
+                        });
     m.properties = {std::move(no_timelock), std::move(replicas),
-                    custom("theorem-2", "Theorem 2's figures against the stated ones",
-                           [=](const checker::ExploreOptions& o) {
-                             return vn_emulation::check_theorem_2(e, o);
-                           })};
+                    custom_property("theorem-2", "Theorem 2's figures against the stated ones",
+                                    [=](const checker::ExploreOptions& o) {
+                                      return vn_emulation::check_theorem_2(e, o);
+                                    })};
     return m;
   };
   // Warm start with one message and one fail; a cold start, where the VN starts exactly

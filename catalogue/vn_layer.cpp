@@ -94,31 +94,24 @@ ModelDefinition vn_layer_definition() {
                                      : vn_layer::every_placement(layer, c);
     ModelInstance m{tioa::Start(layer, start), {}, "1 time unit"};
     const tioa::Automaton system = m.system;
-    const auto custom = [](std::string name, std::string description,
-                           std::function<checker::PropertyResult(const checker::ExploreOptions&)>
-                               run) {
-      return checker::Property{
-          std::move(name), std::move(description), checker::PropertyKind::custom, {}, "", {}, "",
-          std::move(run)};
-    };
     checker::Property no_timelock =
-        custom("no-timelock", "every reachable state has an action or a tick",
-               [=](const checker::ExploreOptions& o) {
-                 checker::PropertyResult r = checker::check_no_deadlock(system, o);
-                 vn_layer::note_round_rules(c, r);
-                 return r;
-               });
+        custom_property("no-timelock", "every reachable state has an action or a tick",
+                        [=](const checker::ExploreOptions& o) {
+                          checker::PropertyResult r = checker::check_no_deadlock(system, o);
+                          vn_layer::note_round_rules(c, r);
+                          return r;
+                        });
     no_timelock.fingerprint_store = true;
-    m.properties = {std::move(no_timelock),
-                    custom("round-timing", "(T1)-(T4) of seed 002 §V-B on every reachable state",
-                           [=](const checker::ExploreOptions& o) {
-                             return vn_layer::check_round_timing(c, system, o);
-                           }),
-                    custom("y-consistency",
-                           "y_f(h) = y_g(h) for VNs computing in one round (002:232)",
-                           [=](const checker::ExploreOptions& o) {
-                             return vn_layer::check_y_consistency(c, system, o);
-                           })};
+    m.properties = {
+        std::move(no_timelock),
+        custom_property("round-timing", "(T1)-(T4) of seed 002 §V-B on every reachable state",
+                        [=](const checker::ExploreOptions& o) {
+                          return vn_layer::check_round_timing(c, system, o);
+                        }),
+        custom_property("y-consistency", "y_f(h) = y_g(h) for VNs computing in one round (002:232)",
+                        [=](const checker::ExploreOptions& o) {
+                          return vn_layer::check_y_consistency(c, system, o);
+                        })};
     return m;
   };
   // 2×1 with 2 CNs at every placement (a second each); then from the corner, what breaks:
