@@ -13,7 +13,7 @@ PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& 
                                  const StatePredicate& ended, const std::string& ended_name) {
   const tioa::SuccessorGenerator generator(system);
   std::optional<ZeroTimeReduction> reduction;
-  if (options.por && generator.timed())
+  if (options.por)
     reduction.emplace(generator, tioa::StatePredicate{});
   const Exploration ex =
       explore(generator, system.start(), options, hooks(), reduction ? &*reduction : nullptr);

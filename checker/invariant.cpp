@@ -9,7 +9,7 @@ PropertyResult check_invariant(const Automaton& system, const StatePredicate& in
                                const ExploreOptions& options) {
   const tioa::SuccessorGenerator generator(system);
   std::optional<ZeroTimeReduction> reduction;
-  if (options.por && generator.timed())
+  if (options.por)
     reduction.emplace(generator, invariant);
   const Exploration ex =
       explore(generator, system.start(), options,

@@ -20,9 +20,11 @@
 #include <optional>
 #include <type_traits>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "checker/checks.hpp"
+#include "checker/stabilisation_without_cycles.hpp"
 
 namespace checker {
 
@@ -325,6 +327,30 @@ Trace witness(const tioa::SuccessorGenerator& gen, const Exploration& ex, const 
   }
 }
 
+// A declared progress measure increases on every step (tioa/automaton.hpp): checked on
+// every edge of the graph, which is the whole reachable graph here.
+void check_progress_measure(const Automaton& system, const Exploration& ex, const Graph& g) {
+  const tioa::StateMeasure& measure = system.progress_measure();
+  if (!measure)
+    return;
+  // In an untimed automaton every step lasts one unit (its edges carry the timed bit); in
+  // a timed one those edges are ticks, which the measure does not speak of.
+  const bool ticks = system.timed();
+  for (StateId v = 0; v < ex.store.size(); ++v) {
+    const std::uint64_t here = measure(tioa::State(ex.store.state(v), 0));
+    const auto [begin, end] = g.out(v);
+    for (auto t = begin; t != end; ++t) {
+      const StateId to = *t & ~Edge::timed_bit;
+      if ((ticks && (*t & Edge::timed_bit) != 0) ||
+          measure(tioa::State(ex.store.state(to), 0)) > here)
+        continue;
+      throw tioa::ModelError("a step of " + system.name() +
+                             " does not increase the progress measure it declares (from state " +
+                             std::to_string(v) + " to state " + std::to_string(to) + ")");
+    }
+  }
+}
+
 } // namespace
 
 PropertyResult check_stabilisation(const Automaton& system, const StatePredicate& legal,
@@ -334,6 +360,10 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
 
 PropertyResult check_stabilisation(const Automaton& system, const StatePredicate& legal,
                                    const StatePredicate& settled, const ExploreOptions& options) {
+  if (!settled)
+    if (std::optional<PropertyResult> r =
+            check_stabilisation_without_cycles(system, legal, options))
+      return std::move(*r);
   require_exact_store(options, "the stabilisation check");
   const tioa::SuccessorGenerator gen(system);
   ExploreHooks hooks;
@@ -361,6 +391,7 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
                 " edges): the graph of its components does not fit; no execution checked";
     return r;
   }
+  check_progress_measure(system, ex, g);
   const char* lock_kind = gen.timed() ? "time-lock" : "deadlock";
   if (!c.timelocked_members.empty()) {
     const StateId u = *std::min_element(c.timelocked_members.begin(), c.timelocked_members.end());

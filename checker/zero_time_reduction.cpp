@@ -61,11 +61,34 @@ ZeroTimeReduction::ZeroTimeReduction(const tioa::SuccessorGenerator& generator,
   for (std::uint32_t a = 0; a < table_.actions(); ++a)
     for (std::uint32_t w = 0; w < words_; ++w)
       touched[w] |= table_.action_reads(a)[w] | table_.action_writes(a)[w];
+  // Steps of one action with a small box count one by one (step(i) of robot i may touch
+  // only robot i's part, while the action as a whole touches every robot's).
   can_reduce_ = false;
-  for (std::uint32_t a = 0; a < table_.actions() && !can_reduce_; ++a)
+  const auto narrower = [&](const Word* reads, const Word* writes) {
     for (std::uint32_t w = 0; w < words_; ++w)
-      if (table_.action_reads(a)[w] != touched[w] || table_.action_writes(a)[w] != touched[w])
-        can_reduce_ = true;
+      if (reads[w] != touched[w] || writes[w] != touched[w])
+        return true;
+    return false;
+  };
+  for (std::uint32_t a = 0; a < table_.actions() && !can_reduce_; ++a)
+    can_reduce_ = narrower(table_.action_reads(a), table_.action_writes(a));
+  for (std::uint32_t i = 0; i < table_.points() && !can_reduce_; ++i)
+    can_reduce_ = table_.accepted(i) && narrower(table_.point_reads(i), table_.point_writes(i));
+  // A halt flag is left out of the dependencies only where the graph has no cycle (the
+  // header says why); without a progress measure it is a variable like the others.
+  const tioa::Automaton& automaton = generator.automaton();
+  ignored_.assign(words_, 0);
+  if (automaton.halt_flag() && automaton.progress_measure()) {
+    halt_ = automaton.halt_flag();
+    tioa::set_bits(ignored_.data(), halt_->offset, halt_->width);
+  }
+}
+
+void ZeroTimeReduction::drop_ignored(Word* mask) const {
+  if (!halt_)
+    return;
+  for (std::uint32_t w = 0; w < words_; ++w)
+    mask[w] &= ~ignored_[w];
 }
 
 std::string ZeroTimeReduction::first_variable(const Word* bits) const {
@@ -224,6 +247,7 @@ bool ZeroTimeReduction::keeps_value(const Word* state, const Word* reads, Unchan
       } catch (const std::exception&) {
         return false; // a guard that cannot be evaluated there: assume it may change
       }
+      drop_ignored(probe);
       for (std::uint32_t w = 0; w < words_; ++w)
         if (probe[w] & ~(region[w] | constant[w])) {
           region[w] |= probe[w];
@@ -237,8 +261,14 @@ bool ZeroTimeReduction::keeps_value(const Word* state, const Word* reads, Unchan
 }
 
 template <class Unchanged>
-void ZeroTimeReduction::add_enablers(const Word* state, const Word* reads, Unchanged&& unchanged,
-                                     Scratch& s) const {
+void ZeroTimeReduction::add_enablers(const Word* state, const Word* predicate_reads,
+                                     Unchanged&& unchanged, Scratch& s) const {
+  const Word* reads = predicate_reads;
+  if (halt_) {
+    s.predicate_reads.assign(predicate_reads, predicate_reads + words_);
+    drop_ignored(s.predicate_reads.data());
+    reads = s.predicate_reads.data();
+  }
   // Start from every writer of what the predicate read; leave out those whose declared
   // values keep the predicate's value: first all of them at once (most often they do),
   // else one at a time, each with those already left out.
@@ -390,6 +420,9 @@ void ZeroTimeReduction::run_and_relate(const Word* state, std::uint32_t k, Scrat
   Word* changed = writes + words_;
   const std::size_t before = s.durations.size();
   run_step(state, k, s, reads, writes, changed);
+  drop_ignored(reads);
+  drop_ignored(writes);
+  drop_ignored(changed);
   for (std::size_t j = before; j < s.durations.size(); ++j)
     s.order.emplace_back(k, static_cast<std::uint32_t>(j));
   if (s.enabled_left == 0)
@@ -452,6 +485,10 @@ void ZeroTimeReduction::run_step(const Word* state, std::size_t k, Scratch& s, W
     const Word* next = s.successors.data() + at;
     for (std::uint32_t w = 0; w < words_; ++w)
       changed[w] |= next[w] ^ state[w];
+    if (const tioa::StateMeasure& measure = automaton.progress_measure();
+        measure && measure(tioa::State(next, 0)) <= measure(tioa::State(state, 0)))
+      throw tioa::ModelError("step " + automaton.actions()[step.action].label(step.params) +
+                             " does not increase the progress measure its automaton declares");
     // A field written only with declared values takes one of them (or keeps its own).
     for (const auto& set : s.declared.sets) {
       if (overlaps(plain, set.offset, set.width))
@@ -492,7 +529,7 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
   const std::uint32_t actions = table_.actions();
   s.masks.assign(7 * std::size_t{words}, 0);
   Word* tick_reads = s.masks.data() + 3 * std::size_t{words};
-  if (!trajectory.timed || !trajectory.stops(tioa::State(state, 0, tick_reads, words)))
+  if (trajectory.timed && !trajectory.stops(tioa::State(state, 0, tick_reads, words)))
     return std::nullopt; // time can pass here
 
   // Every enabled step; each action's guard and binder reads traced together.
@@ -518,6 +555,11 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
       }
     });
   }
+  if (halt_ && !s.enabled.empty() && tioa::State(state, 0).code(*halt_) != 0)
+    throw tioa::ModelError("step " +
+                           signatures[s.enabled.front().action].label(s.enabled.front().params) +
+                           " is enabled in a state where the halt flag '" + halt_->name +
+                           "' is set (a halt flag disables every step)");
   if (s.enabled.size() <= 1)
     return std::nullopt;
 
@@ -550,8 +592,9 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
   s.order.clear();
 
   // The stubborn set.
-  add_enablers(
-      state, tick_reads, [&](const tioa::State& t) { return trajectory.stops(t); }, s);
+  if (trajectory.timed)
+    add_enablers(
+        state, tick_reads, [&](const tioa::State& t) { return trajectory.stops(t); }, s);
   if (invariant_) {
     Word* reads = tick_reads; // done with
     std::fill(reads, reads + words, 0);

@@ -49,6 +49,25 @@
 // time can pass are always expanded in full. The reduced graph keeps every state the
 // checks look for, but not every state or edge: counts, and traces, are those of the
 // reduced graph (traces are real, not always the shortest).
+//
+// An untimed automaton has no tick: every state is reduced, with no set for the
+// stop-when condition; the argument above is unchanged (it never needed time to pass).
+//
+// A halt flag (Automaton::set_halt_flag: once set, no step is enabled; steps only set
+// it) is left out of every dependency when the automaton also declares a progress
+// measure (no cycle). Otherwise every step that may meet the bound would depend on every
+// other one, since each guard reads the flag. Why it stays sound: take M', the automaton
+// whose guards do not read the flag; our graph is M' cut at the halted states, and the
+// sets are M''s. A state the checks look for that is not halted is reached in the full
+// graph by a path with no halted state; the first step of the set on it was enabled
+// here and commuted with the steps before it (it reads and writes nothing they do, the
+// channel a send fills included), so the shorter path from its successor is also free of
+// halted states, and the induction stays inside the cut graph. A halted state h: in M'
+// every path from h goes on to a state with no step (no cycle, finitely many states),
+// which has the flag set too (steps never clear it); the sets keep every such end state
+// of M' (the first argument, with "no step" as the predicate), and the reduced path to it
+// passes a first halted state, which the cut search reaches. The progress measure is
+// checked on every step run here (a ModelError if a step does not increase it).
 
 #include <cstdint>
 #include <optional>
@@ -114,7 +133,8 @@ public:
     std::vector<StepTable::Values> bound;
     std::vector<std::uint32_t> bound_stamp;
     std::uint32_t stamp = 0;
-    std::uint64_t reduced = 0; // states where fewer steps than enabled were taken
+    std::vector<Word> predicate_reads; // what a predicate read, less the halt flag
+    std::uint64_t reduced = 0;         // states where fewer steps than enabled were taken
   };
 
   // Fills scratch.successors and scratch.durations with the successors to explore from
@@ -161,6 +181,8 @@ private:
   // Whether `action` can only write, on the fields of `mask`, the values they hold.
   bool writes_only_current(std::uint32_t action, const Word* state, const Word* mask,
                            Scratch& s) const;
+  // Clears the halt flag's bits from `mask` (when it is left out of dependencies).
+  void drop_ignored(Word* mask) const;
   // The name of the variable that holds the first bit of `bits`.
   std::string first_variable(const Word* bits) const;
   // Whether step `params` of `action` is enabled in `state` (binders included).
@@ -173,6 +195,8 @@ private:
   std::uint32_t words_;
   std::uint32_t action_words_; // words of a bit set of actions
   bool can_reduce_ = true;
+  std::optional<tioa::Slot> halt_; // the halt flag, when left out of dependencies
+  std::vector<Word> ignored_;      // its bits
 };
 
 } // namespace checker

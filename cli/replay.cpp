@@ -175,6 +175,8 @@ Outcome evaluate(const tioa::SuccessorGenerator& generator, const checker::Prope
                  std::string(property->kind == checker::PropertyKind::deadlock
                                  ? ""
                                  : " and is outside " + name);
+    } else if (kind == "end" && has_no_step(generator, states[last]) && in(set, last)) {
+      out.what = "the last state has no step and is in " + name;
     } else if (kind == "lasso" && loop_start.is_number_unsigned()) {
       const std::size_t from = loop_start.get<std::size_t>();
       bool outside = times[last] > times[from];
@@ -191,7 +193,7 @@ Outcome evaluate(const tioa::SuccessorGenerator& generator, const checker::Prope
       if (latest && *latest == trace["last_time_outside"].get<std::uint64_t>() && in(set, last))
         out.what = "outside " + name + " at time " + std::to_string(*latest) + ", in it at the end";
     } else if (kind == "time-lock" || kind == "deadlock" || kind == "invariant" ||
-               kind == "closure-step" || kind == "lasso" || kind == "worst-case") {
+               kind == "closure-step" || kind == "lasso" || kind == "worst-case" || kind == "end") {
       continue;
     } else {
       out.confirmed = true;

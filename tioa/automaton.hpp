@@ -114,6 +114,23 @@ public:
   // ---- trajectories: makes the automaton timed
   void trajectories(Evolve evolve, StatePredicate stop_when = {});
 
+  // ---- facts about every step that a model may declare for the partial-order reduction
+  // (checker/zero_time_reduction.hpp); Start, U and hide keep them, compose and Fail
+  // build new automata without them.
+  //
+  // A progress measure: a number that every step strictly increases, so the graph of
+  // states has no cycle and every execution ends. Declared by the model (with the argument
+  // why in its README), and checked on every step the reduction runs and on every edge of
+  // an unreduced stabilisation check: a step that does not increase it is a ModelError.
+  void set_progress_measure(StateMeasure measure) { progress_measure_ = std::move(measure); }
+  const StateMeasure& progress_measure() const { return progress_measure_; }
+  // A halt flag: a boolean that, once true, disables every step (a bound the model met),
+  // and that steps only ever set to true. With a progress measure, the reduction leaves
+  // it out of what makes two steps depend on each other (a step that may meet the bound
+  // would otherwise depend on every other step).
+  void set_halt_flag(Variable<bool> flag) { halt_flag_ = flag.slot; }
+  const std::optional<Slot>& halt_flag() const { return halt_flag_; }
+
   // ---- start states (the declared initial values unless set)
   void set_start(StartSet start) { start_ = std::move(start); }
   const StartSet& start() const;
@@ -151,6 +168,8 @@ private:
   std::vector<Transition> transitions_;
   Trajectories trajectories_;
   std::optional<StartSet> start_;
+  StateMeasure progress_measure_;
+  std::optional<Slot> halt_flag_;
   mutable std::optional<StartSet> declared_start_;
 };
 

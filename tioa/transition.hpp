@@ -30,6 +30,7 @@ using Effect = std::function<void(State&, const Params&)>;
 using ChoiceCount = std::function<std::uint32_t(const State&, const Params&)>;
 using ChoiceEffect = std::function<void(State&, const Params&, std::uint32_t choice)>;
 using Evolve = std::function<void(State&)>;
+using StateMeasure = std::function<std::uint64_t(const State&)>;
 
 // A binder gives the only value a parameter can take for the step to be enabled in a
 // state (nullopt: none, e.g. the variable is ⊥): the one-point rule of a guard that says

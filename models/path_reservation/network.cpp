@@ -135,6 +135,17 @@ Message Network::take(State& s, int from, int to, int k) const {
   return m;
 }
 
+int Network::load(const State& s) const {
+  int load = 0;
+  for (int from = 1; from <= robots_; ++from)
+    for (int to = 1; to <= robots_; ++to)
+      for (int k = 0; from != to && k < capacity_; ++k) {
+        const MessageKind at = kind(s, from, to, k);
+        load += at == MessageKind::none ? 0 : at == MessageKind::request ? 2 : 1;
+      }
+  return load;
+}
+
 // With `any`, equal messages in a channel are one choice (their successors are one state).
 bool Network::repeats(const State& s, int from, int to, int k) const {
   return order_ == ChannelOrder::any && k > 0 && kind(s, from, to, k - 1) == kind(s, from, to, k) &&

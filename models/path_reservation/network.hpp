@@ -88,6 +88,10 @@ public:
   // Takes the message out of `slot`, keeping the canonical form.
   Message take(tioa::State& s, int from, int to, int slot) const;
 
+  // The messages in flight, a request counting twice (a term of the protocol's progress
+  // measure: protocol.cpp, progress_measure).
+  int load(const tioa::State& s) const;
+
   // The messages of `kind` in from -> to that the receiver can take now, when it reads the
   // kinds of `reads`: every one with `any`; with `fifo` the first message it reads, if it
   // is of `kind` (the ones before it wait at the receiver: README, "Channels").

@@ -302,15 +302,44 @@ void finish_negotiation(const Geometry& g, const Vars& v, const ProtocolOptions&
     build_graphs(g, v, options, s, i, n);
 }
 
+// The most cells a chunk moves (at least 1): the range of `step`.
+int longest_chunk(const Geometry& g) {
+  int longest = 1;
+  for (const auto& per_robot : g.cells)
+    for (const auto& cells : per_robot)
+      longest = std::max(longest, static_cast<int>(cells.size()) - 1);
+  return longest;
+}
+
+// The progress measure (Automaton::set_progress_measure): every step increases it, so the
+// graph of states has no cycle and every execution ends (README, "No cycles"). First the
+// robots' progress: each robot's (chunk, phase, cell reached) in that order, which no
+// step lowers and every step that changes a phase, or moves, raises (phases in the order
+// of the enum; halted, the last, is entered from negotiating or exchanging). A step that
+// changes no phase takes a message out of a channel or a robot out of `pings`, and sends
+// at most one message in return, and only when what it took was a request: it lowers the
+// load (requests count twice) plus the robots still to reply to Discover.
+std::uint64_t progress_measure(const Vars& v, int n, int longest, const State& s) {
+  const std::uint64_t per_phase = static_cast<std::uint64_t>(longest) + 1;
+  const std::uint64_t per_chunk = 9 * per_phase; // Phase has 9 values
+  std::uint64_t progress = 0;
+  int waiting = v.net->load(s);
+  for (int r = 1; r <= n; ++r) {
+    progress += static_cast<std::uint64_t>(s[v.chunk[r]]) * per_chunk +
+                static_cast<std::uint64_t>(s[v.phase[r]]) * per_phase +
+                static_cast<std::uint64_t>(s[v.step[r]]);
+    waiting += __builtin_popcount(static_cast<unsigned>(s[v.pings[r]]));
+  }
+  constexpr std::uint64_t room = std::uint64_t{1} << 20; // more than any load
+  return progress * room + (room - 1 - static_cast<std::uint64_t>(waiting));
+}
+
 } // namespace
 
 void Builder::declare(tioa::Automaton& a) {
   const auto robots = tioa::ids(1, static_cast<std::size_t>(n_));
   const auto names = robot_names(n_);
-  int longest = 1;
-  for (const auto& per_robot : geo_->cells)
-    for (const auto& cells : per_robot)
-      longest = std::max(longest, static_cast<int>(cells.size()) - 1);
+  const int longest = longest_chunk(*geo_);
   v_.phase = a.enumerations<Phase>("phase", robots,
                                    {"idle", "discovering", "negotiating", "exchanging", "waiting",
                                     "moving", "released", "done", "halted"},
@@ -618,6 +647,13 @@ Protocol Builder::build() {
   discover(out.system);
   negotiate(out.system);
   reserve_move_release(out.system);
+  // A send to a full channel stops the model (network.hpp), and every step increases the
+  // progress measure: the stabilisation checks may then take their route for graphs
+  // without cycles (checker/stabilisation_without_cycles.hpp; README, "No cycles").
+  out.system.set_halt_flag(v_.net->overflow());
+  out.system.set_progress_measure([v = v_, n = n_, longest = longest_chunk(*geo_)](const State& s) {
+    return progress_measure(v, n, longest, s);
+  });
   out.phase = v_.phase;
   out.chunk = v_.chunk;
   out.step = v_.step;
