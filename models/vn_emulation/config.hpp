@@ -26,6 +26,9 @@ struct EmuConfig {
   // Readings of lines the OCR or the paper leave open (README "Readings"):
   bool record_always = false; // D9: completed-actions += key after the if, not inside it
   bool quiescent_ack = true;  // D32: ack-join waits until no VN action is enabled (002:456)
+  // The ghosts of P7's monitor (refinement.hpp), declared only for the check that reads
+  // them, so that the other checks keep their state counts.
+  bool refinement_monitor = false;
 
   // The instance VN, a FIFO counter (D31): count mod counter_modulus, the last sender, a
   // send queue of at most out_capacity entries, and a send counter mod send_modulus.
@@ -42,6 +45,8 @@ struct EmuConfig {
   static constexpr int key_capacity = 2;       // send keys in completed-actions
   static constexpr int seen_capacity = 2;      // VN message ids a client remembers
   static constexpr int sequence_capacity = 7;  // TOBcast sequence numbers in one instant
+  static constexpr int sent_capacity = 2;      // P7's monitor: VN message ids transmitted
+  static constexpr int reset_capacity = 2;     // P7's monitor: resets delivered
 
   // TOBcast delivers a packet exactly d_p + ε after it was sent (002:348).
   int hold() const { return d_p + eps; }

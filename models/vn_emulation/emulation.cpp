@@ -4,7 +4,9 @@
 #include <string>
 #include <tuple>
 
+#include "models/vn_emulation/key_set.hpp"
 #include "models/vn_emulation/predicates.hpp"
+#include "models/vn_emulation/refinement.hpp"
 
 namespace vn_emulation {
 
@@ -144,26 +146,10 @@ void reset_pn(const Slots& slots, State& s, int i) {
 // Adds a VN message id to CN_i's seen ids; false when it was there.
 bool see(const Slots& slots, State& s, int i, const Key& id) {
   const PnSlots& p = slots.pns[i];
-  std::vector<Key> seen;
-  for (int k = 0; k < EmuConfig::seen_capacity; ++k)
-    if (!s.is_bottom(p.seen_age[k]))
-      seen.push_back({s[p.seen_age[k]], s[p.seen_from[k]]});
-  if (std::find(seen.begin(), seen.end(), id) != seen.end())
-    return false;
-  if (static_cast<int>(seen.size()) == EmuConfig::seen_capacity) {
+  const KeyAdded added = add_key(s, p.seen_age, p.seen_from, id);
+  if (added == KeyAdded::full)
     slots.exceed(s, i, Bound::seen);
-    return true;
-  }
-  seen.push_back(id);
-  std::sort(seen.begin(), seen.end(), [](const Key& x, const Key& y) {
-    return std::tie(x.age, x.from) < std::tie(y.age, y.from);
-  });
-  for (int k = 0; k < EmuConfig::seen_capacity; ++k) {
-    const Key key = k < static_cast<int>(seen.size()) ? seen[k] : Key{};
-    set_optional(s, p.seen_age[k], key.age);
-    s[p.seen_from[k]] = key.from;
-  }
-  return true;
+  return added != KeyAdded::known;
 }
 
 void advance_packet(State& s, const PacketSlots& p) {
@@ -173,26 +159,12 @@ void advance_packet(State& s, const PacketSlots& p) {
       s.advance(age);
 }
 
-// Drops the keys older than the horizon (D11) from a set of keys held in `age`/`from`.
-template <std::size_t N>
-void collect(State& s, const std::array<Variable<int>, N>& age,
-             const std::array<Variable<int>, N>& from, int horizon) {
-  std::vector<Key> kept;
-  for (std::size_t k = 0; k < N; ++k)
-    if (!s.is_bottom(age[k]) && s[age[k]] < horizon)
-      kept.push_back({s[age[k]], s[from[k]]});
-  for (std::size_t k = 0; k < N; ++k) {
-    const Key key = k < kept.size() ? kept[k] : Key{};
-    set_optional(s, age[k], key.age);
-    s[from[k]] = key.from;
-  }
-}
-
 // One quantum: Theorem 2's monitors read the state where time passes, then every age
 // grows, the instant's sequence numbers and client sends start again, and old keys go.
 void tick(const Slots& slots, State& s) {
   const EmuConfig& c = slots.config;
   const std::optional<VnValue> abstract = abstract_value(slots, s);
+  monitor_tick(slots, s, abstract.has_value());
   for (const PnSlots& p : slots.pns)
     s[p.startup_wait] =
         s[p.up] && !abstract ? std::min(s[p.startup_wait] + 1, 2 * c.stated_d_r()) : 0;
@@ -236,6 +208,7 @@ void tick(const Slots& slots, State& s) {
     collect(s, p.key_age, p.key_from, c.horizon());
     collect(s, p.seen_age, p.seen_from, c.horizon());
   }
+  monitor_age(slots, s);
 }
 
 // What each step may read and write (tioa/footprint.hpp), for the zero-time reduction: a
@@ -251,8 +224,7 @@ void declare_footprints(tioa::Automaton& a, const std::shared_ptr<const Slots>& 
   for (int i = 0; i < n; ++i) {
     const std::string id = "_" + std::to_string(i);
     const Block own = slots->pns[i].block, flight = slots->pns[i].flight_block;
-    for (const char* local :
-         {"zone-update", "join", "restart", "init-action", "ack-join", "TOBcast-rcv"})
+    for (const char* local : {"zone-update", "join", "restart", "init-action", "ack-join"})
       declare(local + id, [=](const Params&, tioa::Footprint& f) { block(f, own); });
     // With inputs=ticks the environment reads whether time may pass: every PN.
     const auto environment_reads = [=](tioa::Footprint& f) {
@@ -262,6 +234,15 @@ void declare_footprints(tioa::Automaton& a, const std::shared_ptr<const Slots>& 
           block(f, p.flight_block);
         }
     };
+    // P7's monitor, when there is one: TOBcast's deliveries and the transmissions.
+    const auto monitor = [=](tioa::Footprint& f) {
+      if (slots->refinement)
+        block(f, slots->refinement->block);
+    };
+    declare("TOBcast-rcv" + id, [=](const Params&, tioa::Footprint& f) {
+      block(f, own);
+      monitor(f);
+    });
     declare("recover" + id, [=](const Params&, tioa::Footprint& f) {
       block(f, own);
       environment_reads(f);
@@ -277,6 +258,7 @@ void declare_footprints(tioa::Automaton& a, const std::shared_ptr<const Slots>& 
         block(f, flight);
         for (const PnSlots& p : slots->pns)
           f.reads(p.up);
+        monitor(f);
       });
     declare("lb-rcv" + id, [=](const Params& m, tioa::Footprint& f) {
       block(f, own);
@@ -495,7 +477,9 @@ Emulation emulation(const EmuConfig& c) {
                  !is_empty(s, slots->pns[i].local_out[0]);
         })
         .eff([slots, i](State& s, const Params&) {
-          lb_send(*slots, s, i, pop_front(s, slots->pns[i].local_out), 0);
+          const Packet message = pop_front(s, slots->pns[i].local_out);
+          monitor_transmit(*slots, s, i, message);
+          lb_send(*slots, s, i, message, 0);
         });
 
     // Output TOBcast-rcv(m)_{i,h} of TOBcast_i, input of VNE_i (002:456): the first packet
@@ -510,9 +494,11 @@ Emulation emulation(const EmuConfig& c) {
         .eff([slots, i](State& s, const Params&) {
           const PnSlots& q = slots->pns[i];
           std::vector<Entry> entries = load_buffer(*slots, s, q);
-          const Packet m = entries.front().packet;
+          const Entry head = entries.front();
+          const Packet m = head.packet;
           entries.erase(entries.begin());
           store_buffer(s, q, entries);
+          monitor_delivery(*slots, s, i, head); // before the delivery changes the status
           const Status status = s[q.status];
           switch (m.kind) {
           case Kind::simulate_receive:

@@ -154,10 +154,18 @@ Entry Slots::entry(const State& s, const BufferSlots& b) const {
 }
 
 const char* to_string(Bound bound) {
-  static const char* const names[] = {"none",        "pending-actions",  "TOBcast-out",
-                                      "local-out",   "LBcast in flight", "TOBcast's buffer",
-                                      "send keys",   "seen ids",         "sequence numbers",
-                                      "the VN's out"};
+  static const char* const names[] = {"none",
+                                      "pending-actions",
+                                      "TOBcast-out",
+                                      "local-out",
+                                      "LBcast in flight",
+                                      "TOBcast's buffer",
+                                      "send keys",
+                                      "seen ids",
+                                      "sequence numbers",
+                                      "the VN's out",
+                                      "the VN message ids P7's monitor keeps",
+                                      "the TOBcast messages P7's monitor keeps"};
   return names[static_cast<int>(bound)];
 }
 
@@ -214,10 +222,11 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
     }
     p.sent_now = a.boolean(pn + ".sent_now", false);
     p.startup_wait = a.integer(pn + ".startup_wait", 0, 2 * c.stated_d_r(), 0);
-    p.bound_met = a.enumeration<Bound>(pn + ".bound_met",
-                                       {"none", "pending", "tob_out", "local_out", "flight",
-                                        "buffer", "keys", "seen", "sequence", "out"},
-                                       Bound::none);
+    p.bound_met =
+        a.enumeration<Bound>(pn + ".bound_met",
+                             {"none", "pending", "tob_out", "local_out", "flight", "buffer", "keys",
+                              "seen", "sequence", "out", "sent_ids", "taken"},
+                             Bound::none);
     p.block.bits = a.layout().bits() - p.block.offset;
     slots->pns.push_back(std::move(p));
   }
@@ -241,6 +250,29 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
   for (int m = 0; m < c.messages; ++m)
     slots->message_wait.push_back(
         a.optional_integer(at("Monitor.message_wait", m), 0, c.age_cap()));
+  if (c.refinement_monitor) {
+    RefinementSlots r;
+    r.block.offset = a.layout().bits();
+    r.abstract = value_slots(a, "Monitor.val_abs", c.pns);
+    r.done_received = a.integer("Monitor.done_received", 0, (1 << c.messages) - 1, 0);
+    for (int k = 0; k < EmuConfig::key_capacity; ++k) {
+      r.done_age[k] = age_variable(a, at("Monitor.done_age", k), c);
+      r.done_from[k] = a.integer(at("Monitor.done_from", k), 0, c.pns - 1, 0);
+    }
+    for (int k = 0; k < EmuConfig::buffer_capacity; ++k) {
+      const std::string name = at("Monitor.taken", k);
+      r.taken.push_back({packet_slots(a, name, c, false), age_variable(a, name + ".ts_age", c),
+                         a.integer(name + ".sender", 0, c.pns - 1, 0),
+                         a.integer(name + ".seq", 0, EmuConfig::sequence_capacity, 0)});
+    }
+    for (int k = 0; k < EmuConfig::sent_capacity; ++k) {
+      r.sent_age[k] = age_variable(a, at("Monitor.sent_age", k), c);
+      r.sent_from[k] = a.integer(at("Monitor.sent_from", k), 0, c.pns - 1, 0);
+    }
+    r.refused_by = a.integer("Monitor.refused_by", 0, c.pns, 0);
+    r.block.bits = a.layout().bits() - r.block.offset;
+    slots->refinement = r;
+  }
   return slots;
 }
 

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "models/vn_emulation/config.hpp"
@@ -106,7 +107,20 @@ struct ValueSlots {
 enum class Status { idle, joining, listening, active }; // D1: idle is used, not declared
 
 // Which of the model's bounds a step met (EmuConfig): the state is a dead end there.
-enum class Bound { none, pending, tob_out, local_out, flight, buffer, keys, seen, sequence, out };
+enum class Bound {
+  none,
+  pending,
+  tob_out,
+  local_out,
+  flight,
+  buffer,
+  keys,
+  seen,
+  sequence,
+  out,
+  sent_ids,
+  taken
+};
 const char* to_string(Bound bound);
 
 // A block of contiguous bits of the state, for footprints.
@@ -142,6 +156,26 @@ struct PnSlots {
   Block flight_block; // the flight
 };
 
+// The ghosts of P7's monitor (refinement.hpp; docs/design/vn-emulation.md §1.8, §4.3):
+// the abstract VN_0 run on the events the emulation maps to its actions.
+struct RefinementSlots {
+  // A reference replica: it takes each TOBcast message once, at its first delivery to a
+  // replica, and executes it at once, as a VNE would (refinement.hpp).
+  ValueSlots abstract;         // val_abs, VN_0's state as the abstract VN holds it
+  Variable<int> done_received; // its completed receives
+  std::array<Variable<int>, EmuConfig::key_capacity> done_age, done_from; // completed sends
+  // The TOBcast messages it has taken in this instant (a message's tag ⟨ts, sender,
+  // sequence⟩ and its content without a join-ack's payload: a PN that fails and recovers
+  // within an instant starts its sequence numbers again, so a tag alone may repeat).
+  std::vector<BufferSlots> taken;
+  // The ids of the VN messages it has sent (D10), kept across restarts; a transmission of
+  // any other is refused. Collected after the horizon (D11), as the others.
+  std::array<Variable<int>, EmuConfig::sent_capacity> sent_age, sent_from;
+  // The first refused transmission: 0 none, else 1 + the transmitting PN.
+  Variable<int> refused_by;
+  Block block;
+};
+
 struct Slots {
   EmuConfig config;
   std::vector<PnSlots> pns;
@@ -150,6 +184,7 @@ struct Slots {
   // saw at the last tick); per client message, quanta since its send while VN_h owed it.
   Variable<int> task_wait, task_sseq;
   std::vector<Variable<int>> message_wait;
+  std::optional<RefinementSlots> refinement; // with EmuConfig::refinement_monitor
 
   Completed completed(const State& s, int pn) const;
   void set_completed(State& s, int pn, const Completed& c) const;

@@ -21,5 +21,11 @@ checker::PropertyResult check_replica_consistency(const Emulation& emulation,
 // first state past a stated figure; holds with a witness of the figure nearest its bound.
 checker::PropertyResult check_theorem_2(const Emulation& emulation,
                                         const checker::ExploreOptions& options);
+// P7: the emulation implements the abstract VN_0 (models/vn_emulation/refinement.hpp):
+// no transmission the abstract VN could not make, and wherever time can pass every active
+// replica holds the abstract VN's state. `emulation` must be built with
+// EmuConfig::refinement_monitor.
+checker::PropertyResult check_refinement(const Emulation& emulation,
+                                         const checker::ExploreOptions& options);
 
 } // namespace vn_emulation

@@ -8,6 +8,8 @@
 #include "catalogue/vn_emulation.hpp"
 #include "checker/property.hpp"
 #include "checker/trace.hpp"
+#include "models/vn_emulation/emulation.hpp"
+#include "models/vn_emulation/refinement.hpp"
 
 namespace vn_emulation_test {
 
@@ -93,4 +95,47 @@ TEST_CASE("vn-emulation: a model bound met makes a check incomplete, never holds
   CHECK(r.verdict == checker::Verdict::incomplete);
   CHECK_THAT(r.message, Catch::Contains("the bound on TOBcast's buffer"));
   CHECK(r.trace_kind == "bound");
+}
+
+TEST_CASE("vn-emulation refines-vn: the emulation implements the abstract VN on the defaults",
+          "[vn-emulation]") {
+  const auto r = et::run("refines-vn", {}).result;
+  CHECK(r.verdict == checker::Verdict::holds);
+  // The monitor's ghosts (the reference replica's val, completed actions, the instant's
+  // TOBcast messages) tell apart states the other checks count as one: 120,790 there.
+  CHECK(r.states == 132'452);
+  const auto cold = et::run("refines-vn", {"start=cold", "messages=0", "fails=0"}).result;
+  CHECK(cold.verdict == checker::Verdict::holds);
+}
+
+TEST_CASE("vn-emulation refines-vn: the monitor sees a replica that leaves the abstract VN, and "
+          "a transmission the VN did not make",
+          "[vn-emulation]") {
+  vn_emulation::EmuConfig c;
+  c.refinement_monitor = true;
+  const vn_emulation::Emulation e = vn_emulation::emulation(c);
+  const vn_emulation::Slots& slots = *e.slots;
+  // The warm start state: both replicas active at the VN's start, as the monitor.
+  std::vector<tioa::Word> words(e.automaton.words() + 1, 0), start;
+  e.automaton.start().enumerate(words.data(), 0, [&] { start = words; });
+  tioa::State s(start.data(), 0);
+  CHECK_FALSE(vn_emulation::refinement_failure(slots, s));
+  // PN_1 holds a state the abstract VN never reached (nothing to send: time may pass).
+  vn_emulation::VnValue other;
+  other.count = 1;
+  other.last = 0;
+  slots.pns[1].value.store(s, other);
+  const auto failure = vn_emulation::refinement_failure(slots, s);
+  REQUIRE(failure);
+  CHECK(failure->find("PN_1") != std::string::npos);
+  slots.pns[1].value.store(s, vn_emulation::VnValue{});
+  // A VN message no replica's reference executed goes out.
+  vn_emulation::Packet message;
+  message.kind = vn_emulation::Kind::vn_message;
+  message.age = 0;
+  message.from = 0;
+  vn_emulation::monitor_transmit(slots, s, 0, message);
+  const auto refused = vn_emulation::refinement_failure(slots, s);
+  REQUIRE(refused);
+  CHECK(refused->find("did not send") != std::string::npos);
 }

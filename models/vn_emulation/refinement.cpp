@@ -1,0 +1,178 @@
+#include "models/vn_emulation/refinement.hpp"
+
+#include <algorithm>
+#include <tuple>
+#include <vector>
+
+#include "models/vn_emulation/key_set.hpp"
+#include "models/vn_emulation/predicates.hpp"
+
+namespace vn_emulation {
+
+namespace {
+
+// A TOBcast message as the monitor remembers it: its tag and its content without a
+// join-ack's payload.
+Entry remembered(const Entry& e) {
+  Entry out = e;
+  out.packet.value = 0;
+  out.packet.done = {};
+  return out;
+}
+
+bool same(const Entry& x, const Entry& y) {
+  return x.packet == y.packet && x.age == y.age && x.sender == y.sender && x.sequence == y.sequence;
+}
+
+// TOBcast's delivery order (store_buffer's: timestamp, join-reqs last, sender, sequence),
+// then the content, for tags that repeat.
+auto delivery_order(const Entry& e) {
+  const Packet& p = e.packet;
+  return std::make_tuple(-e.age, p.kind == Kind::join_req, e.sender, e.sequence,
+                         static_cast<int>(p.kind), p.message, p.from, p.count, p.last, p.age);
+}
+
+std::vector<Entry> load_taken(const Slots& slots, const RefinementSlots& r, const State& s) {
+  std::vector<Entry> out;
+  for (const BufferSlots& b : r.taken)
+    if (s[b.packet.kind] != static_cast<int>(Kind::none))
+      out.push_back(slots.entry(s, b));
+  return out;
+}
+
+void store_taken(const RefinementSlots& r, State& s, std::vector<Entry> taken) {
+  std::sort(taken.begin(), taken.end(),
+            [](const Entry& x, const Entry& y) { return delivery_order(x) < delivery_order(y); });
+  for (std::size_t k = 0; k < r.taken.size(); ++k) {
+    const Entry e = k < taken.size() ? taken[k] : Entry{Packet{}, -1, 0, 0};
+    r.taken[k].packet.store(s, e.packet);
+    set_optional(s, r.taken[k].age, e.age);
+    s[r.taken[k].sender] = e.sender;
+    s[r.taken[k].sequence] = e.sequence;
+  }
+}
+
+// The reference replica after this instant's TOBcast messages, executed in TOBcast's
+// order from its state at the instant's start, as a VNE executes them (002:446–452; D9:
+// a key recorded when executed; D5: a reset restarts it).
+struct Reference {
+  VnValue val;
+  int done_received = 0;
+  std::vector<Key> done, sent; // completed sends; the sends made in this instant
+};
+
+Reference replay(const Slots& slots, const State& s) {
+  const RefinementSlots& r = *slots.refinement;
+  Reference ref{r.abstract.load(s), s[r.done_received], load_keys(s, r.done_age, r.done_from), {}};
+  for (const Entry& e : load_taken(slots, r, s)) { // stored in delivery order
+    const Packet& m = e.packet;
+    if (m.kind == Kind::simulate_receive) {
+      if (((ref.done_received >> m.message) & 1) == 0 && ref.val.can_receive()) {
+        ref.val.receive(m.from);
+        ref.done_received |= 1 << m.message;
+      }
+    } else if (m.kind == Kind::simulate_send) {
+      const Key oid{m.age, m.from};
+      if (std::find(ref.done.begin(), ref.done.end(), oid) == ref.done.end() &&
+          ref.val.send_enabled(m.count, m.last)) {
+        ref.val.send();
+        ref.done.push_back(oid);
+        ref.sent.push_back(oid);
+      }
+    } else if (m.kind == Kind::reset) {
+      ref.val = VnValue{};
+      ref.done_received = 0;
+      ref.done.clear();
+    }
+  }
+  return ref;
+}
+
+} // namespace
+
+void monitor_delivery(const Slots& slots, State& s, int pn, const Entry& entry) {
+  if (!slots.refinement)
+    return;
+  const RefinementSlots& r = *slots.refinement;
+  std::vector<Entry> taken = load_taken(slots, r, s);
+  const Entry id = remembered(entry);
+  if (std::any_of(taken.begin(), taken.end(), [&](const Entry& e) { return same(e, id); }))
+    return; // taken at another PN's delivery
+  if (taken.size() == r.taken.size()) {
+    slots.exceed(s, pn, Bound::taken);
+    return;
+  }
+  taken.push_back(id);
+  store_taken(r, s, std::move(taken));
+}
+
+void monitor_transmit(const Slots& slots, State& s, int pn, const Packet& m) {
+  if (!slots.refinement)
+    return;
+  const RefinementSlots& r = *slots.refinement;
+  const Key id{m.age, m.from};
+  std::vector<Key> sent = load_keys(s, r.sent_age, r.sent_from);
+  const std::vector<Key> now = replay(slots, s).sent;
+  sent.insert(sent.end(), now.begin(), now.end());
+  if (std::find(sent.begin(), sent.end(), id) == sent.end() && s[r.refused_by] == 0)
+    s[r.refused_by] = pn + 1;
+}
+
+void monitor_tick(const Slots& slots, State& s, bool alive) {
+  if (!slots.refinement)
+    return;
+  const RefinementSlots& r = *slots.refinement;
+  Reference ref = replay(slots, s);
+  for (const Key& id : ref.sent)
+    if (add_key(s, r.sent_age, r.sent_from, id) == KeyAdded::full)
+      slots.exceed(s, 0, Bound::sent_ids);
+  if (!alive) // what a failed VN_0 held no longer matters: one ghost value
+    ref = Reference{};
+  if (ref.done.size() > r.done_age.size()) {
+    slots.exceed(s, 0, Bound::sent_ids);
+    ref.done.resize(r.done_age.size());
+  }
+  r.abstract.store(s, ref.val);
+  s[r.done_received] = ref.done_received;
+  store_keys(s, r.done_age, r.done_from, ref.done);
+  // Every PN delivers a TOBcast message in one instant, ts + d_p + ε (it has it by ts +
+  // d_p, 002:37, and delivery is urgent): the instant's messages are done with.
+  store_taken(r, s, {});
+}
+
+void monitor_age(const Slots& slots, State& s) {
+  if (!slots.refinement)
+    return;
+  const RefinementSlots& r = *slots.refinement;
+  const int horizon = slots.config.horizon();
+  for (const auto* ages : {&r.done_age, &r.sent_age})
+    for (const auto& age : *ages)
+      s.advance(age);
+  collect(s, r.done_age, r.done_from, horizon);
+  collect(s, r.sent_age, r.sent_from, horizon);
+}
+
+std::optional<std::string> refinement_failure(const Slots& slots, const State& s) {
+  if (!slots.refinement)
+    return std::nullopt;
+  const RefinementSlots& r = *slots.refinement;
+  const VnValue abstract = replay(slots, s).val;
+  if (s[r.refused_by] != 0)
+    return "PN_" + std::to_string(s[r.refused_by] - 1) +
+           " transmitted a VN message the abstract VN did not send (its state: " +
+           describe(abstract) + ")";
+  if (urgent(slots, s))
+    return std::nullopt;
+  for (int i = 0; i < slots.config.pns; ++i) {
+    const PnSlots& p = slots.pns[i];
+    if (!in_zone(slots, s, i) || s[p.status] != Status::active)
+      continue;
+    const VnValue held = p.value.load(s);
+    if (held != abstract)
+      return "the active replica PN_" + std::to_string(i) + " holds (" + describe(held) +
+             ") where time passes, the abstract VN (" + describe(abstract) + ")";
+  }
+  return std::nullopt;
+}
+
+} // namespace vn_emulation
