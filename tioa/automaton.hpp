@@ -118,8 +118,8 @@ public:
   // (checker/zero_time_reduction.hpp); Start, U and hide keep them, compose and Fail
   // build new automata without them.
   //
-  // A progress measure: a number that every step strictly increases, so the graph of
-  // states has no cycle and every execution ends. Declared by the model (with the argument
+  // A progress measure: a number that every step strictly increases, from any state (U
+  // starts anywhere), so the graph of states has no cycle and every execution ends. Declared by the model (with the argument
   // why in its README), and checked on every step the reduction runs and on every edge of
   // an unreduced stabilisation check: a step that does not increase it is a ModelError.
   void set_progress_measure(StateMeasure measure) { progress_measure_ = std::move(measure); }
