@@ -51,7 +51,9 @@ ModelDefinition vn_emulation_definition() {
       {"theorem-2", "Theorem 2's d_MMT = 2d_p + 2eps, d_r = 4d_p + 5eps and d_v = 2d_p + eps, "
                     "measured as worst cases against the stated ones"},
       {"refines-vn", "the emulation implements the abstract VN: every event it maps to the VN's "
-                     "actions is one the VN can take, and the replicas hold the VN's state"}};
+                     "actions is one the VN can take, and the replicas hold the VN's state"},
+      {"no-live-restart", "no reset restarts the VN while it is alive (P6; F4 of "
+                          "docs/design/vn-emulation.md)"}};
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     return vn_emulation::invalid(vn_emulation_config(p));
   };
@@ -84,16 +86,22 @@ ModelDefinition vn_emulation_definition() {
                                     [=](const checker::ExploreOptions& o) {
                                       return vn_emulation::check_refinement(
                                           vn_emulation::emulation(monitored), o);
+                                    }),
+                    custom_property("no-live-restart", "no reset restarts a live VN",
+                                    [=](const checker::ExploreOptions& o) {
+                                      return vn_emulation::check_no_live_restart(
+                                          vn_emulation::emulation(monitored), o);
                                     })};
     return m;
   };
   // Warm start with one message and one fail; a cold start, where the VN starts exactly
-  // d_r = 4d_p + 5eps after time 0 (README). E1 (d_v broken) needs two fails and tens of
-  // seconds: it is a test, not a suite entry.
+  // d_r = 4d_p + 5eps after time 0 (README). E1 (d_v broken) and F4 (a live VN restarted)
+  // need two fails and tens of seconds: they are tests, not suite entries.
   d.suite = {{{}, "no-timelock", checker::Verdict::holds},
              {{}, "replica-consistency", checker::Verdict::holds},
              {{}, "theorem-2", checker::Verdict::holds},
              {{}, "refines-vn", checker::Verdict::holds},
+             {{}, "no-live-restart", checker::Verdict::holds},
              {{{"start", ParamValue::choice("cold")}, {"messages", 0}, {"fails", 0}},
               "theorem-2",
               checker::Verdict::holds}};

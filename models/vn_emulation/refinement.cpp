@@ -104,6 +104,9 @@ void monitor_delivery(const Slots& slots, State& s, int pn, const Entry& entry) 
   }
   taken.push_back(id);
   store_taken(r, s, std::move(taken));
+  // P6: a reset delivered while VN_0 is alive, as it was at the last tick.
+  if (entry.packet.kind == Kind::reset && s[r.was_alive] && vn_alive(slots, s))
+    s[r.live_restart] = true;
 }
 
 void monitor_transmit(const Slots& slots, State& s, int pn, const Packet& m) {
@@ -126,6 +129,7 @@ void monitor_tick(const Slots& slots, State& s, bool alive) {
   for (const Key& id : ref.sent)
     if (add_key(s, r.sent_age, r.sent_from, id) == KeyAdded::full)
       slots.exceed(s, 0, Bound::sent_ids);
+  s[r.was_alive] = alive;
   if (!alive) // what a failed VN_0 held no longer matters: one ghost value
     ref = Reference{};
   if (ref.done.size() > r.done_age.size()) {
@@ -150,6 +154,10 @@ void monitor_age(const Slots& slots, State& s) {
       s.advance(age);
   collect(s, r.done_age, r.done_from, horizon);
   collect(s, r.sent_age, r.sent_from, horizon);
+}
+
+bool restarted_live(const Slots& slots, const State& s) {
+  return slots.refinement && s[slots.refinement->live_restart];
 }
 
 std::optional<std::string> refinement_failure(const Slots& slots, const State& s) {

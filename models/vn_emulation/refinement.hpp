@@ -47,6 +47,11 @@ void monitor_tick(const Slots& slots, State& s, bool alive);
 // Ages of the monitor's ids grow by one, and old ones go (D11).
 void monitor_age(const Slots& slots, State& s);
 
+// P6 (F4): a reset has been delivered while VN_0 was alive, as it was at the last tick
+// before (a restart of a live VN; seed 002's layer allows it, seed 000's "VSA V_u is not
+// failed", 000:1177–1178, and the layer's vn_fail=empty do not).
+bool restarted_live(const Slots& slots, const State& s);
+
 // What breaks P7 in `s`, in words: a refused transmission, or (where time can pass) an
 // active replica whose val is not val_abs. nullopt when nothing does.
 std::optional<std::string> refinement_failure(const Slots& slots, const State& s);

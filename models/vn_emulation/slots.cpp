@@ -270,6 +270,8 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
       r.sent_from[k] = a.integer(at("Monitor.sent_from", k), 0, c.pns - 1, 0);
     }
     r.refused_by = a.integer("Monitor.refused_by", 0, c.pns, 0);
+    r.was_alive = a.boolean("Monitor.was_alive", warm);
+    r.live_restart = a.boolean("Monitor.live_restart", false);
     r.block.bits = a.layout().bits() - r.block.offset;
     slots->refinement = r;
   }

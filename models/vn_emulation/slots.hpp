@@ -173,6 +173,9 @@ struct RefinementSlots {
   std::array<Variable<int>, EmuConfig::sent_capacity> sent_age, sent_from;
   // The first refused transmission: 0 none, else 1 + the transmitting PN.
   Variable<int> refused_by;
+  // P6: VN_0 was alive at the last tick, and a reset was delivered while it still was (a
+  // restart of a live VN, F4).
+  Variable<bool> was_alive, live_restart;
   Block block;
 };
 

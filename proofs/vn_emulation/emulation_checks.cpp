@@ -93,6 +93,21 @@ void decide(Run& run, const Slots& slots, std::optional<StateId> violation, cons
   checker::mark_holds(r, run.ex, holds);
 }
 
+// A trace shows the emulation as the model's other checks do (and replays on it): the
+// monitor's ghosts, declared after every other variable, are cut off; the message says
+// what they held.
+void strip_monitor(const Emulation& e, PropertyResult& r) {
+  if (!r.trace || !e.slots->refinement)
+    return;
+  const std::uint32_t first_ghost = e.slots->refinement->block.offset;
+  const std::size_t words = (first_ghost + 63) / 64;
+  for (checker::TraceStep& step : r.trace->steps) {
+    step.state.resize(words);
+    if (first_ghost % 64 != 0)
+      step.state.back() &= (tioa::Word{1} << (first_ghost % 64)) - 1;
+  }
+}
+
 // One figure of Theorem 2: a monitor read on every reachable state.
 struct Figure {
   Figure(std::string name_, std::string formula_, int stated_)
@@ -167,18 +182,24 @@ PropertyResult check_refinement(const Emulation& e, const checker::ExploreOption
          "the abstract VN takes every event, and every active replica holds its state "
          "wherever time passes, on all " +
              checker::reachable_states(run.result.states, run.ex));
-  // The trace shows the emulation as the model's other checks do (and replays on it): the
-  // monitor's ghosts, declared after every other variable, are cut off; the message says
-  // what the abstract VN held.
-  if (run.result.trace) {
-    const std::uint32_t first_ghost = e.slots->refinement->block.offset;
-    const std::size_t words = (first_ghost + 63) / 64;
-    for (checker::TraceStep& step : run.result.trace->steps) {
-      step.state.resize(words);
-      if (first_ghost % 64 != 0)
-        step.state.back() &= (tioa::Word{1} << (first_ghost % 64)) - 1;
-    }
-  }
+  strip_monitor(e, run.result);
+  return run.result;
+}
+
+PropertyResult check_no_live_restart(const Emulation& e, const checker::ExploreOptions& options) {
+  if (!e.slots->refinement)
+    throw std::logic_error("check_no_live_restart: the emulation has no refinement monitor");
+  Run run = explore_emulation(e, options, "no-live-restart");
+  std::optional<StateId> restart;
+  for (StateId id = 0; id < run.ex.store.size() && !restart; ++id)
+    if (restarted_live(*e.slots, tioa::State(run.ex.store.state(id), 0)))
+      restart = id;
+  decide(run, *e.slots, restart,
+         "a reset restarts VN_0 while it is alive (F4: its state is lost, which seed 002's "
+         "layer allows and seed 000's does not)",
+         "no reset restarts a live VN_0 in the " +
+             checker::reachable_states(run.result.states, run.ex));
+  strip_monitor(e, run.result);
   return run.result;
 }
 

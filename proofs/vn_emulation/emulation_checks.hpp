@@ -27,5 +27,9 @@ checker::PropertyResult check_theorem_2(const Emulation& emulation,
 // EmuConfig::refinement_monitor.
 checker::PropertyResult check_refinement(const Emulation& emulation,
                                          const checker::ExploreOptions& options);
+// P6: no reset restarts a live VN_0 (F4 of the specification). Violated with a shortest
+// trace to the restart. Needs the refinement monitor too.
+checker::PropertyResult check_no_live_restart(const Emulation& emulation,
+                                              const checker::ExploreOptions& options);
 
 } // namespace vn_emulation

@@ -139,3 +139,19 @@ TEST_CASE("vn-emulation refines-vn: the monitor sees a replica that leaves the a
   REQUIRE(refused);
   CHECK(refused->find("did not send") != std::string::npos);
 }
+
+TEST_CASE("vn-emulation no-live-restart: with two fails two joiners' resets restart a live VN "
+          "(the specification's F4)",
+          "[vn-emulation][slow]") {
+  CHECK(et::run("no-live-restart", {}).result.verdict == checker::Verdict::holds);
+  checker::ExploreOptions bounded;
+  bounded.limits.max_states = 4'000'000; // the trace is 41 steps deep; the whole space 20M+
+  const et::Run r = et::run("no-live-restart", {"fails=2"}, bounded);
+  CHECK(r.result.verdict == checker::Verdict::violated);
+  REQUIRE(r.result.trace);
+  CHECK(r.result.trace->length() == 41);
+  // The trace is cut to the emulation's variables and replays on the model's automaton.
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(r.system), *r.result.trace, &why));
+  INFO(why);
+}
