@@ -475,6 +475,8 @@ void ZeroTimeReduction::run_step(const Word* state, std::size_t k, Scratch& s, W
                            "', outside the footprint it declares (needed by the partial-order "
                            "reduction)");
   };
+  const tioa::StateMeasure& measure = automaton.progress_measure();
+  const std::uint64_t measure_here = measure ? measure(tioa::State(state, 0)) : 0;
   for (std::uint32_t c = 0; c < choices; ++c) {
     const std::size_t at = s.successors.size();
     s.successors.insert(s.successors.end(), state, state + words_);
@@ -485,8 +487,7 @@ void ZeroTimeReduction::run_step(const Word* state, std::size_t k, Scratch& s, W
     const Word* next = s.successors.data() + at;
     for (std::uint32_t w = 0; w < words_; ++w)
       changed[w] |= next[w] ^ state[w];
-    if (const tioa::StateMeasure& measure = automaton.progress_measure();
-        measure && measure(tioa::State(next, 0)) <= measure(tioa::State(state, 0)))
+    if (measure && measure(tioa::State(next, 0)) <= measure_here)
       throw tioa::ModelError("step " + automaton.actions()[step.action].label(step.params) +
                              " does not increase the progress measure its automaton declares");
     // A field written only with declared values takes one of them (or keeps its own).

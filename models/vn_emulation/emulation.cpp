@@ -87,13 +87,7 @@ void store_buffer(State& s, const PnSlots& p, std::vector<Entry> entries) {
     };
     return key(x) < key(y);
   });
-  for (std::size_t k = 0; k < p.buffer.size(); ++k) {
-    const Entry e = k < entries.size() ? entries[k] : Entry{Packet{}, -1, 0, 0};
-    p.buffer[k].packet.store(s, e.packet);
-    set_optional(s, p.buffer[k].age, e.age);
-    s[p.buffer[k].sender] = e.sender;
-    s[p.buffer[k].sequence] = e.sequence;
-  }
+  store_entries(s, p.buffer, entries);
 }
 
 int up_mask(const Slots& slots, const State& s) {

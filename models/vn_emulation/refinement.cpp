@@ -43,13 +43,7 @@ std::vector<Entry> load_taken(const Slots& slots, const RefinementSlots& r, cons
 void store_taken(const RefinementSlots& r, State& s, std::vector<Entry> taken) {
   std::sort(taken.begin(), taken.end(),
             [](const Entry& x, const Entry& y) { return delivery_order(x) < delivery_order(y); });
-  for (std::size_t k = 0; k < r.taken.size(); ++k) {
-    const Entry e = k < taken.size() ? taken[k] : Entry{Packet{}, -1, 0, 0};
-    r.taken[k].packet.store(s, e.packet);
-    set_optional(s, r.taken[k].age, e.age);
-    s[r.taken[k].sender] = e.sender;
-    s[r.taken[k].sequence] = e.sequence;
-  }
+  store_entries(s, r.taken, taken);
 }
 
 // The reference replica after this instant's TOBcast messages, executed in TOBcast's

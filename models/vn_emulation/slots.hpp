@@ -205,6 +205,10 @@ struct Slots {
   }
 };
 
+// Stores `entries` in `places`, in that order; the places left over are emptied.
+void store_entries(State& s, const std::vector<BufferSlots>& places,
+                   const std::vector<Entry>& entries);
+
 // Declares every variable of the emulation in `a`.
 std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& config);
 

@@ -4,6 +4,7 @@
 #include <functional>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "checker/explorer.hpp"
 #include "checker/trace.hpp"
@@ -93,6 +94,16 @@ void decide(Run& run, const Slots& slots, std::optional<StateId> violation, cons
   checker::mark_holds(r, run.ex, holds);
 }
 
+// The first state, in breadth-first order, where `failure` (a state's fault in words, or
+// nullopt) finds something, with what it found.
+template <class Failure>
+std::pair<std::optional<StateId>, std::string> first_failure(const Run& run, Failure failure) {
+  for (StateId id = 0; id < run.ex.store.size(); ++id)
+    if (const std::optional<std::string> why = failure(tioa::State(run.ex.store.state(id), 0)))
+      return {id, *why};
+  return {std::nullopt, ""};
+}
+
 // A trace shows the emulation as the model's other checks do (and replays on it): the
 // monitor's ghosts, declared after every other variable, are cut off; the message says
 // what they held.
@@ -138,13 +149,8 @@ PropertyResult check_no_timelock(const Emulation& e, const checker::ExploreOptio
 PropertyResult check_replica_consistency(const Emulation& e,
                                          const checker::ExploreOptions& options) {
   Run run = explore_emulation(e, options, "replica-consistency");
-  std::optional<StateId> broken;
-  std::string why;
-  for (StateId id = 0; id < run.ex.store.size() && !broken; ++id)
-    if (const auto failure = replica_failure(*e.slots, tioa::State(run.ex.store.state(id), 0))) {
-      broken = id;
-      why = *failure;
-    }
+  const auto [broken, why] =
+      first_failure(run, [&](const tioa::State& s) { return replica_failure(*e.slots, s); });
   decide(run, *e.slots, broken, "replicas disagree where time passes: " + why,
          "the active replicas agree on every one of the " +
              checker::reachable_states(run.result.states, run.ex) + " where time passes");
@@ -167,17 +173,13 @@ PropertyResult check_refinement(const Emulation& e, const checker::ExploreOption
     return r;
   }
   Run run = explore_emulation(e, options, "refines-vn");
-  std::optional<StateId> broken;
-  std::string why;
-  for (StateId id = 0; id < run.ex.store.size() && !broken; ++id)
-    if (const auto failure = refinement_failure(*e.slots, tioa::State(run.ex.store.state(id), 0))) {
-      broken = id;
-      why = *failure;
-    }
+  const auto [broken, why] =
+      first_failure(run, [&](const tioa::State& s) { return refinement_failure(*e.slots, s); });
   run.result.notes.push_back(
-      "VN_0's events: receive at a message's first execution, send at a VN message's first "
-      "transmission, restart at a reset's first delivery (docs/design/vn-emulation.md §1.8); "
-      "the timing is theorem-2's");
+      "VN_0's events: each instant's TOBcast messages, executed in TOBcast's order by a "
+      "reference replica (models/vn_emulation/refinement.hpp; not the map of "
+      "docs/design/vn-emulation.md §1.8, which orders events by the replicas' "
+      "interleaving); the timing is theorem-2's");
   decide(run, *e.slots, broken, "the emulation leaves the abstract VN: " + why,
          "the abstract VN takes every event, and every active replica holds its state "
          "wherever time passes, on all " +
@@ -190,10 +192,12 @@ PropertyResult check_no_live_restart(const Emulation& e, const checker::ExploreO
   if (!e.slots->refinement)
     throw std::logic_error("check_no_live_restart: the emulation has no refinement monitor");
   Run run = explore_emulation(e, options, "no-live-restart");
-  std::optional<StateId> restart;
-  for (StateId id = 0; id < run.ex.store.size() && !restart; ++id)
-    if (restarted_live(*e.slots, tioa::State(run.ex.store.state(id), 0)))
-      restart = id;
+  const std::optional<StateId> restart =
+      first_failure(run, [&](const tioa::State& s) -> std::optional<std::string> {
+        if (restarted_live(*e.slots, s))
+          return "";
+        return std::nullopt;
+      }).first;
   decide(run, *e.slots, restart,
          "a reset restarts VN_0 while it is alive (F4: its state is lost, which seed 002's "
          "layer allows and seed 000's does not)",
