@@ -127,22 +127,41 @@ private:
     std::uint64_t fingerprint; // (fingerprint store) the key
     std::uint32_t duration;
   };
+  // A state of the batch being expanded: its successors are pending[first..first+count).
+  struct Expanded {
+    StateId id;
+    std::uint32_t first, count;
+  };
+  // A batch ends after this many states, or once it has this many successors.
+  static constexpr std::uint32_t batch_states = 16;
+  static constexpr std::size_t batch_successors = 64;
+
   bool grow_room(std::size_t edge_room, std::size_t stuck_room);
   template <class T> bool grow_within(std::vector<T>& v, std::size_t more);
-  // Inserts or finds one successor; false when the level stops.
+  // The checks made every 1024 states (progress, interrupt, time and memory limits);
+  // false when the level stops.
+  bool keep_going(const Level& level, StateId id, bool calling_thread);
+  // Appends the successors of `state` to the pending ones, prefetching their slots.
   template <class Hooks>
-  bool insert(const Hooks& hooks, const Level& level, StateId from, std::uint32_t step);
+  void generate(const Hooks& hooks, const Level& level, const Word* state, std::uint32_t words);
+  // Inserts or finds successor `step` of `from` (pending[index]); false when the level stops.
+  template <class Hooks>
+  bool insert(const Hooks& hooks, const Level& level, StateId from, std::uint32_t step,
+              std::uint32_t index);
 
-  StateBuffer pending_states; // successors of the state being expanded
+  StateBuffer pending_states; // successors of the batch being expanded
   std::vector<Pending> pending;
+  std::vector<Expanded> batch;
+  std::uint64_t checks = 0;         // made by keep_going()
   std::vector<Word> scratch;        // the successor generator's
   std::vector<Word> representative; // a successor's (the canonical hook)
 };
 
 template <class Hooks>
-bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::uint32_t step) {
-  const Word* succ = pending_states[step];
-  const Pending& p = pending[step];
+bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::uint32_t step,
+                    std::uint32_t index) {
+  const Word* succ = pending_states[index];
+  const Pending& p = pending[index];
   const Word* key_words = level.states ? &p.fingerprint : succ;
   const std::uint64_t key = Discovery::key(from, step);
   StateId to = 0;
@@ -199,77 +218,102 @@ bool Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
   const std::uint32_t words = level.generator.words();
   const bool record_edges = records_edges(hooks);
   try {
-    for (StateId id = begin; id < end; ++id) {
-      if (((id - begin) & 1023) == 1023) {
-        if (calling_thread) // (chunks are taken in order: roughly what is left)
-          level.progress.update(level.store.size(), level.end - id, level.depth);
-        if (interrupted()) // stop_after_level() names the reason
+    StateId next_check = begin + 1024;
+    for (StateId id = begin; id < end;) {
+      if (id >= next_check) {
+        next_check = id + 1024;
+        if (!keep_going(level, id, calling_thread))
           return false;
-        if (level.limits.max_seconds > 0 || level.limits.deadline) {
-          if (level.signals.out_of_time.load(std::memory_order_relaxed))
-            return false;
-          if (level.limits.out_of_time(level.progress.elapsed())) {
-            level.signals.out_of_time = true;
-            return false;
-          }
-        }
-        if (level.signals.out_of_memory.load(std::memory_order_relaxed) || level.gate.stopped())
-          return false;
-        // What the budget does not see (the model's memos, the allocator's slack) shows in
-        // the resident memory.
-        if (((id - begin) & 16383) == 16383 && resident_over_limit(level.limits)) {
+      }
+      // A batch of states (ids in order): every successor is generated first and its slot
+      // in the store prefetched; then, the slots having arrived, the states they hold are
+      // prefetched; only then is each successor looked up, in the same order as one at a
+      // time, so the lookups overlap their cache misses instead of waiting for each.
+      pending_states.clear();
+      pending.clear();
+      batch.clear();
+      const StateId batch_end = std::min<StateId>(end, id + batch_states);
+      for (; id < batch_end && pending.size() < batch_successors; ++id) {
+        const Word* state = level.frontier(id);
+        if (!expands(hooks, state))
+          continue;
+        const std::size_t first = pending.size();
+        generate(hooks, level, state, words);
+        batch.push_back({id, static_cast<std::uint32_t>(first),
+                         static_cast<std::uint32_t>(pending.size() - first)});
+      }
+      for (const Pending& p : pending)
+        level.store.prefetch_state(p.hash);
+      for (const Expanded& e : batch) {
+        // Edges pile up in the level buffers, which grow only within this worker's share
+        // of the memory left.
+        if (!make_room(e.count, record_edges)) {
           level.signals.out_of_memory = true;
           return false;
         }
+        ++expanded;
+        edge_count += e.count;
+        if (e.count == 0)
+          stuck.push_back(e.id);
+        for (std::uint32_t k = 0; k < e.count; ++k)
+          if (!insert(hooks, level, e.id, k, e.first + k))
+            return false;
       }
-      const Word* state = level.frontier(id);
-      if (!expands(hooks, state))
-        continue;
-      // Generate every successor first and prefetch its slot in the store, so that the
-      // lookups below overlap their cache misses instead of waiting for each in turn.
-      pending_states.clear();
-      pending.clear();
-      auto take = [&](const Word* succ, std::uint32_t duration) {
-        if (canonicalises(hooks)) {
-          std::copy(succ, succ + words, representative.begin());
-          canonicalise(hooks, representative.data());
-          succ = representative.data();
-        }
-        std::uint64_t fingerprint_of = 0;
-        const StoreKey key = store_key(succ, words, level.states != nullptr, fingerprint_of);
-        level.store.prefetch(key.hash);
-        pending_states.push(succ);
-        pending.push_back({key.hash, fingerprint_of, duration});
-      };
-      std::size_t n = 0;
-      const std::optional<std::size_t> reduced =
-          level.reduction ? level.reduction->reduce(state, reduction) : std::nullopt;
-      if (reduced) {
-        n = *reduced;
-        for (std::size_t k = 0; k < n; ++k)
-          take(reduction.successors.data() + k * words, reduction.durations[k]);
-      } else {
-        n = level.generator.successors(state, scratch.data(),
-                                       [&](const Word* succ, const tioa::StepLabel& label) {
-                                         take(succ, level.generator.duration(label));
-                                       });
-      }
-      // Edges pile up in the level buffers, which grow only within this worker's share of
-      // the memory left.
-      if (!make_room(n, record_edges)) {
-        level.signals.out_of_memory = true;
-        return false;
-      }
-      ++expanded;
-      edge_count += n;
-      if (n == 0)
-        stuck.push_back(id);
-      for (std::size_t k = 0; k < n; ++k)
-        if (!insert(hooks, level, id, static_cast<std::uint32_t>(k)))
-          return false;
     }
   } catch (...) {
     error = std::current_exception();
+    return false;
+  }
+  return true;
+}
+
+template <class Hooks>
+void Worker::generate(const Hooks& hooks, const Level& level, const Word* state,
+                      std::uint32_t words) {
+  auto take = [&](const Word* succ, std::uint32_t duration) {
+    if (canonicalises(hooks)) {
+      std::copy(succ, succ + words, representative.begin());
+      canonicalise(hooks, representative.data());
+      succ = representative.data();
+    }
+    std::uint64_t fingerprint_of = 0;
+    const StoreKey key = store_key(succ, words, level.states != nullptr, fingerprint_of);
+    level.store.prefetch(key.hash);
+    pending_states.push(succ);
+    pending.push_back({key.hash, fingerprint_of, duration});
+  };
+  const std::optional<std::size_t> reduced =
+      level.reduction ? level.reduction->reduce(state, reduction) : std::nullopt;
+  if (reduced) {
+    for (std::size_t k = 0; k < *reduced; ++k)
+      take(reduction.successors.data() + k * words, reduction.durations[k]);
+    return;
+  }
+  level.generator.successors(state, scratch.data(),
+                             [&](const Word* succ, const tioa::StepLabel& label) {
+                               take(succ, level.generator.duration(label));
+                             });
+}
+
+inline bool Worker::keep_going(const Level& level, StateId id, bool calling_thread) {
+  if (calling_thread) // (chunks are taken in order: roughly what is left)
+    level.progress.update(level.store.size(), level.end - id, level.depth);
+  if (interrupted()) // stop_after_level() names the reason
+    return false;
+  if (level.limits.max_seconds > 0 || level.limits.deadline) {
+    if (level.signals.out_of_time.load(std::memory_order_relaxed))
+      return false;
+    if (level.limits.out_of_time(level.progress.elapsed())) {
+      level.signals.out_of_time = true;
+      return false;
+    }
+  }
+  if (level.signals.out_of_memory.load(std::memory_order_relaxed) || level.gate.stopped())
+    return false;
+  // What the budget does not see (the model's memos, the allocator's slack) shows in the
+  // resident memory.
+  if (++checks % 16 == 0 && resident_over_limit(level.limits)) {
+    level.signals.out_of_memory = true;
     return false;
   }
   return true;

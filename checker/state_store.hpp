@@ -50,6 +50,16 @@ public:
 
   // Starts loading the slot where a state with this hash would be.
   void prefetch(std::uint64_t hash) const { __builtin_prefetch(table_.data() + (hash & mask_)); }
+  // Starts loading the state a lookup of this hash compares first: the one its home slot
+  // holds, when the tags agree. A hint only (the slot may change before the lookup);
+  // while the table cannot grow (between two checkpoints of the growth gate).
+  void prefetch_state(std::uint64_t hash) const {
+    const std::uint64_t slot =
+        std::atomic_ref<std::uint32_t>(const_cast<std::uint32_t&>(table_[hash & mask_]))
+            .load(std::memory_order_relaxed);
+    if (slot != 0 && (slot >> bits_) == tag_of(hash) && (slot & mask_) != mask_)
+      __builtin_prefetch(state(static_cast<StateId>((slot & mask_) - 1)));
+  }
 
   std::optional<StateId> find(const Word* state, std::uint64_t hash) const {
     const std::uint64_t tag = tag_of(hash);

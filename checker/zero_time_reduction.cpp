@@ -107,11 +107,9 @@ std::string ZeroTimeReduction::first_variable(const Word* bits) const {
 bool ZeroTimeReduction::step_enabled(std::uint32_t action, const tioa::Params& params,
                                      const tioa::State& state) const {
   const tioa::Transition& t = generator_->automaton().transitions()[action];
-  for (const auto& binding : t.bindings) {
-    const std::optional<std::int32_t> value = binding.bind(state, params);
-    if (!value || *value != params[binding.param])
-      return false; // a value the binder rules out
-  }
+  for (const auto& binding : t.bindings)
+    if (!binding.allows(state, params))
+      return false; // a value the binding rules out
   return t.enabled(state, params);
 }
 

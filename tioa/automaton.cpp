@@ -33,6 +33,26 @@ TransitionBuilder& TransitionBuilder::footprint(FootprintFunction footprint) {
 }
 
 TransitionBuilder& TransitionBuilder::bind(const std::string& param, Binder value) {
+  Binding b;
+  b.value = std::move(value);
+  return add_binding(param, std::move(b));
+}
+
+TransitionBuilder& TransitionBuilder::add_filter(const std::string& param, Binding binding,
+                                                 std::int64_t code) {
+  const ActionSignature& sig = automaton_->signature(action_);
+  if (binding.where.empty())
+    throw ModelError("action '" + sig.name + "': parameter '" + param +
+                     "' is filtered by an empty array");
+  for (const Slot& slot : binding.where)
+    if (code < 0 || static_cast<std::uint64_t>(code) >= slot.value_codes)
+      throw ModelError("action '" + sig.name + "': parameter '" + param +
+                       "' is filtered by a value outside the domain of '" + slot.name + "'");
+  binding.where_code = static_cast<std::uint64_t>(code);
+  return add_binding(param, std::move(binding));
+}
+
+TransitionBuilder& TransitionBuilder::add_binding(const std::string& param, Binding binding) {
   const ActionSignature& sig = automaton_->signature(action_);
   if (sig.kind == ActionKind::input)
     throw ModelError("input '" + sig.name + "' cannot bind a parameter: every value may occur");
@@ -45,7 +65,8 @@ TransitionBuilder& TransitionBuilder::bind(const std::string& param, Binder valu
   for (const Binding& b : t.bindings)
     if (b.param == index)
       throw ModelError("parameter '" + param + "' of '" + sig.name + "' is bound twice");
-  t.bindings.push_back({static_cast<std::uint8_t>(index), std::move(value), 0});
+  binding.param = static_cast<std::uint8_t>(index);
+  t.bindings.push_back(std::move(binding));
   std::sort(t.bindings.begin(), t.bindings.end(),
             [](const Binding& a, const Binding& b) { return a.param < b.param; });
   return *this;

@@ -15,6 +15,7 @@
 
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "tioa/actions.hpp"
@@ -45,8 +46,27 @@ public:
   TransitionBuilder& bind(const std::string& param, Binder value);
   // The parameter equals the variable (no value while it is ⊥).
   TransitionBuilder& bind(const std::string& param, const Variable<int>& variable);
+  // The parameter takes only the ids whose variable in `array` holds `value`: for a
+  // guard that says so (Fischer's "loc[p] == REQ"), which keeps its own test. The
+  // generator reads one field per id instead of calling the guard for every id.
+  template <class T>
+  TransitionBuilder& where(const std::string& param, const VariableArray<T>& array, T value) {
+    Binding b;
+    b.where.reserve(array.size());
+    for (const Variable<T>& v : array)
+      b.where.push_back(v.slot);
+    b.where_first = static_cast<std::int32_t>(array.first);
+    std::int64_t code = 0;
+    if constexpr (std::is_same_v<T, bool>)
+      code = value ? 1 : 0;
+    else
+      code = static_cast<std::int64_t>(value) - (array.size() ? array.items[0].slot.lo : 0);
+    return add_filter(param, std::move(b), code);
+  }
 
 private:
+  TransitionBuilder& add_binding(const std::string& param, Binding binding);
+  TransitionBuilder& add_filter(const std::string& param, Binding binding, std::int64_t code);
   Automaton* automaton_;
   std::size_t action_;
 };
@@ -119,9 +139,10 @@ public:
   // build new automata without them.
   //
   // A progress measure: a number that every step strictly increases, from any state (U
-  // starts anywhere), so the graph of states has no cycle and every execution ends. Declared by the model (with the argument
-  // why in its README), and checked on every step the reduction runs and on every edge of
-  // an unreduced stabilisation check: a step that does not increase it is a ModelError.
+  // starts anywhere), so the graph of states has no cycle and every execution ends. Declared by the
+  // model (with the argument why in its README), and checked on every step the reduction runs and
+  // on every edge of an unreduced stabilisation check: a step that does not increase it is a
+  // ModelError.
   void set_progress_measure(StateMeasure measure) { progress_measure_ = std::move(measure); }
   const StateMeasure& progress_measure() const { return progress_measure_; }
   // A halt flag: a boolean that, once true, disables every step (a bound the model met),

@@ -1,8 +1,10 @@
 #pragma once
 // The parameter values the successor generator tries for one action in one state: every
 // point of the action's box that its signature accepts, in lexicographic order, except
-// that a bound parameter (automaton.hpp, Binder) takes only the value its binder gives.
+// that a bound parameter (transition.hpp, Binding) takes only the value its binder gives,
+// or only the ids its filter admits.
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 
@@ -21,6 +23,21 @@ void from(std::size_t i, std::size_t binding, const ActionSignature& sig, const 
     return;
   }
   const ParamRange& range = sig.params[i];
+  if (binding < t.bindings.size() && t.bindings[binding].param == i &&
+      t.bindings[binding].filter()) {
+    const Binding& b = t.bindings[binding];
+    const State local = b.base ? s.at(b.base) : s;
+    // Only the ids both in the box and in the array; read one field each.
+    const std::int64_t first = std::max<std::int64_t>(range.lo, b.where_first);
+    const std::int64_t last =
+        std::min<std::int64_t>(range.hi, b.where_first + std::int64_t(b.where.size()) - 1);
+    for (std::int64_t v = first; v <= last; ++v)
+      if (local.code(b.where[static_cast<std::size_t>(v - b.where_first)]) == b.where_code) {
+        p.values[i] = static_cast<std::int32_t>(v);
+        from(i + 1, binding + 1, sig, t, s, p, visit);
+      }
+    return;
+  }
   if (binding < t.bindings.size() && t.bindings[binding].param == i) {
     const std::optional<std::int32_t> value = t.bindings[binding].bind(s, p);
     if (!value || *value < range.lo || *value > range.hi)

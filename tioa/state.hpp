@@ -49,7 +49,7 @@ public:
     return State(words_, base_ + offset, trace_, trace_words_, write_trace_);
   }
 
-  std::uint64_t code(const Slot& slot) const {
+  [[gnu::always_inline]] std::uint64_t code(const Slot& slot) const {
     const std::uint32_t bit = base_ + slot.offset;
     if (trace_) [[unlikely]]
       set_bits(trace_, bit, slot.width);

@@ -39,13 +39,36 @@ using StateMeasure = std::function<std::uint64_t(const State&)>;
 // reads the state and the parameters before its own; the guard keeps its own test.
 using Binder = std::function<std::optional<std::int32_t>(const State&, const Params&)>;
 
+// A parameter bound to the state: one value (`value`, a Binder), or, when `value` is
+// empty, a filter: the ids whose variable in an array holds one value (the guard's
+// "loc[p] == REQ", TransitionBuilder::where), tested by reading one field per id inline
+// instead of calling the guard through a std::function.
 struct Binding {
   std::uint8_t param = 0;
   Binder value;
-  std::uint32_t base = 0; // where the state of the automaton that wrote it begins
+  std::vector<Slot> where;      // (a filter) the array's variables, by id from where_first
+  std::int32_t where_first = 0; // the id of where[0]
+  std::uint64_t where_code = 0; // the code the variable of an admitted id holds
+  std::uint32_t base = 0;       // where the state of the automaton that wrote it begins
 
+  bool filter() const { return !value; }
+  // (a one-point binder) Its value in this state.
   std::optional<std::int32_t> bind(const State& s, const Params& p) const {
     return value(base ? s.at(base) : s, p);
+  }
+  // (a filter) Whether `id` is admitted in `local`, the state of the automaton that wrote
+  // it (an id outside the array never is: the guard could not read its variable).
+  bool admits(const State& local, std::int32_t id) const {
+    const std::int64_t i = std::int64_t{id} - where_first;
+    return i >= 0 && i < static_cast<std::int64_t>(where.size()) &&
+           local.code(where[static_cast<std::size_t>(i)]) == where_code;
+  }
+  // Whether the value `p` gives the parameter is one the binding allows in `s`.
+  bool allows(const State& s, const Params& p) const {
+    if (filter())
+      return admits(base ? s.at(base) : s, p[param]);
+    const std::optional<std::int32_t> v = bind(s, p);
+    return v && *v == p[param];
   }
 };
 

@@ -25,6 +25,7 @@ Fischer build(int n, int a, int b) {
   // | try   | loc[p] == IDLE && id == 0              | loc[p] := REQ;  c[p] := 0          |
   f.internal("try", {process})
       .pre([=](const State& s, const Params& x) { return s[loc[x[0]]] == Loc::idle && s[id] == 0; })
+      .where(process.name, loc, Loc::idle)
       .eff([=](State& s, const Params& x) {
         s[loc[x[0]]] = Loc::req;
         s[c[x[0]]] = 0;
@@ -32,6 +33,7 @@ Fischer build(int n, int a, int b) {
   // | set   | loc[p] == REQ                          | loc[p] := WAIT; id := p; c[p] := 0 |
   f.internal("set", {process})
       .pre([=](const State& s, const Params& x) { return s[loc[x[0]]] == Loc::req; })
+      .where(process.name, loc, Loc::req)
       .eff([=](State& s, const Params& x) {
         s[loc[x[0]]] = Loc::wait;
         s[id] = x[0];
@@ -52,6 +54,7 @@ Fischer build(int n, int a, int b) {
       .pre([=](const State& s, const Params& x) {
         return s[loc[x[0]]] == Loc::wait && s[c[x[0]]] >= b && s[id] != x[0];
       })
+      .where(process.name, loc, Loc::wait)
       .eff([=](State& s, const Params& x) {
         s[loc[x[0]]] = Loc::idle;
         s[c[x[0]]] = 0;
@@ -59,6 +62,7 @@ Fischer build(int n, int a, int b) {
   // | exit  | loc[p] == CS                           | loc[p] := IDLE; id := 0            |
   f.internal("exit", {process})
       .pre([=](const State& s, const Params& x) { return s[loc[x[0]]] == Loc::cs; })
+      .where(process.name, loc, Loc::cs)
       .eff([=](State& s, const Params& x) {
         s[loc[x[0]]] = Loc::idle;
         s[id] = 0;

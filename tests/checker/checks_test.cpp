@@ -297,7 +297,8 @@ TEST_CASE("stabilisation: a timed countdown stabilises in exactly top quanta",
 // limit the exploration fits in but the graph does not, the verdict is incomplete.
 TEST_CASE("stabilisation: a graph over the memory limit gives incomplete",
           "[checker][stabilisation][limits]") {
-  const auto fischer = fischer::build(3, 1, 2);
+  // (Five processes: with fewer the graph is smaller than the level's buffers.)
+  const auto fischer = fischer::build(5, 1, 2);
   const tioa::SuccessorGenerator generator(fischer.system);
   ExploreHooks hooks;
   hooks.record_edges = true;

@@ -94,3 +94,91 @@ TEST_CASE("binding is refused for inputs, unknown and twice-bound parameters", "
   out.bind("x", v);
   CHECK_THROWS_WITH(out.bind("x", v), Catch::Contains("bound twice"));
 }
+
+namespace {
+
+enum class Phase { idle, busy };
+
+// `go(p)` may take a process p in 1..3 whose phase is idle; `filtered` says so with where().
+Automaton starter(const std::string& name, bool filtered) {
+  Automaton a(name);
+  const auto phase = a.enumerations<Phase>("phase", ids(1, 3), {"IDLE", "BUSY"}, Phase::busy);
+  auto go = a.internal("go_" + name, {{"p", 0, 4}}); // a box wider than the array
+  go.pre([=](const State& s, const Params& x) {
+      return x[0] >= 1 && x[0] <= 3 && s[phase[x[0]]] == Phase::idle;
+    }).eff([=](State& s, const Params& x) { s[phase[x[0]]] = Phase::busy; });
+  if (filtered)
+    go.where("p", phase, Phase::idle);
+  return a;
+}
+
+} // namespace
+
+TEST_CASE("a filtered parameter takes only the ids whose variable holds the value",
+          "[candidates]") {
+  const Automaton free = starter("s", false), filtered = starter("s", true);
+  std::vector<Word> state(2, 0); // (a spare word: GCC cannot see the layout)
+  filtered.start().enumerate(state.data(), 0, [] {});
+  CHECK(candidates(filtered, state).empty()); // every phase is BUSY at start
+  State s(state.data(), 0);
+  s.set(find_variable<Phase>(filtered, "phase[1]"), Phase::idle);
+  s.set(find_variable<Phase>(filtered, "phase[3]"), Phase::idle);
+  const auto tried = candidates(filtered, state);
+  REQUIRE(tried.size() == 2);
+  CHECK(tried[0][0] == 1);
+  CHECK(tried[1][0] == 3);
+  CHECK(candidates(free, state).size() == 5);
+  // The same successors either way.
+  const SuccessorGenerator with(filtered), without(free);
+  std::vector<Word> scratch(3, 0);
+  std::vector<Word> a, b;
+  with.successors(state.data(), scratch.data(),
+                  [&](const Word* w, const StepLabel&) { a.push_back(w[0]); });
+  without.successors(state.data(), scratch.data(),
+                     [&](const Word* w, const StepLabel&) { b.push_back(w[0]); });
+  CHECK(a == b);
+  CHECK(a.size() == 2);
+  // What the reduction asks of one step (Binding::allows).
+  const Binding& binding = filtered.transitions()[0].bindings.front();
+  Params p;
+  p.size = 1;
+  for (const auto& [id, allowed] :
+       {std::pair{0, false}, {1, true}, {2, false}, {3, true}, {4, false}}) {
+    p.values[0] = id;
+    CHECK(binding.allows(s, p) == allowed);
+  }
+}
+
+TEST_CASE("compose and Fail keep a filter, read in the owner's part", "[candidates]") {
+  const Automaton system = compose("two", {starter("a", true), Fail(starter("b", true))});
+  const std::size_t b = *system.find_action("go_b");
+  std::vector<Word> state(2, 0); // (a spare word: GCC cannot see the layout)
+  system.start().enumerate(state.data(), 0, [] {});
+  State s(state.data(), 0);
+  s.set(find_variable<Phase>(system, "b.phase[2]"), Phase::idle);
+  std::vector<Params> tried;
+  for_each_candidate(system.actions()[b], system.transitions()[b], s,
+                     [&](const Params& p) { tried.push_back(p); });
+  REQUIRE(tried.size() == 1);
+  CHECK(tried[0][0] == 2);
+  const std::size_t a = *system.find_action("go_a");
+  tried.clear();
+  for_each_candidate(system.actions()[a], system.transitions()[a], s,
+                     [&](const Params& p) { tried.push_back(p); });
+  CHECK(tried.empty());
+}
+
+TEST_CASE("a filter is refused for inputs, a twice-bound parameter and a value outside the domain",
+          "[candidates]") {
+  Automaton a("a");
+  const auto level = a.integers("level", ids(1, 2), 2, 5, 2);
+  CHECK_THROWS_WITH(a.input("in", {{"p", 1, 2}}).where("p", level, 3),
+                    Catch::Contains("cannot bind"));
+  auto out = a.output("out", {{"p", 1, 2}});
+  CHECK_THROWS_WITH(out.where("p", level, 6), Catch::Contains("outside the domain"));
+  CHECK_THROWS_WITH(out.where("p", level, 1), Catch::Contains("outside the domain"));
+  out.where("p", level, 5);
+  CHECK_THROWS_WITH(out.where("p", level, 4), Catch::Contains("bound twice"));
+  CHECK_THROWS_WITH(a.internal("none", {{"p", 1, 2}}).where("p", VariableArray<int>{}, 0),
+                    Catch::Contains("empty array"));
+}
