@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "checker/collective.hpp"
 #include "checker/discovery.hpp"
 #include "checker/expansion.hpp"
 #include "checker/explorer.hpp"
@@ -31,6 +32,11 @@ template <class Hooks>
 Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::StartSet& start,
                     const ExploreOptions& options, const Hooks& hooks,
                     const ZeroTimeReduction* reduction) {
+  // Every check explores through here, except those that run distributed
+  // (distributed_explorer.hpp): under mpirun the others say so rather than run once per rank.
+  if (distributed())
+    throw NotDistributed("this property does not run distributed yet (invariants do): run it "
+                         "without mpirun");
   const Limits& limits = options.limits;
   const bool fingerprints = options.store == StoreKind::fingerprint;
   // Representatives and edges are read as states after the run: the fingerprint store has

@@ -44,6 +44,7 @@ struct PropertyResult {
   std::uint32_t depth = 0;
   double seconds = 0;
   unsigned threads = 1;
+  unsigned ranks = 1;               // processes of a distributed run (distributed_explorer.hpp)
   bool por = false;                 // zero-time steps were reduced: counts are the reduced graph's
   std::uint64_t reduced_states = 0; // states expanded with fewer steps than were enabled
   std::string store = "exact";      // how the visited states were held: "exact" or "fingerprint"

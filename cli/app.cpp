@@ -16,9 +16,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "checker/collective.hpp"
 #include "checker/interrupt.hpp"
 #include "cli/commands.hpp"
 #include "cli/exit_status.hpp"
+#include "cli/mpi_run.hpp"
 #include "cli/replay.hpp"
 #include "cli/sweep.hpp"
 #include "cli/walk.hpp"
@@ -77,7 +79,11 @@ int print_error(const std::string& program, const std::string& message) {
     if (c == '\n' || c == '\r')
       c = ' ';
   // Whatever a message quotes of the input, the line stays printable.
-  std::cerr << program << ": error: " << support::printable(line) << std::endl;
+  const std::string printed = program + ": error: " + support::printable(line);
+  if (secondary_rank()) // rank 0 prints it (mpi_run.hpp)
+    hold_error(printed);
+  else
+    std::cerr << printed << std::endl;
   return usage_error;
 }
 
@@ -350,6 +356,13 @@ int run_command(int argc, char** argv, const catalogue::Catalogue& models, const
   settings.trace = trace == "json"   ? TraceMode::json
                    : trace == "none" ? TraceMode::none
                                      : TraceMode::text;
+  if (secondary_rank()) { // rank 0 writes the files (mpi_run.hpp)
+    settings.junit_path.clear();
+    settings.html_path.clear();
+    settings.trace_out_path.clear();
+    settings.dot_path.clear();
+    settings.counterexample_out_path.clear();
+  }
 
   try {
     if (list->parsed())
@@ -372,6 +385,8 @@ int run_command(int argc, char** argv, const catalogue::Catalogue& models, const
     return fail(e.what());
   } catch (const tioa::ModelError& e) {
     return fail(std::string("model error: ") + e.what());
+  } catch (const checker::NotDistributed& e) {
+    return fail(e.what());
   } catch (const std::bad_alloc&) {
     return fail("out of memory (bound the run with --max-memory or --max-states)");
   } catch (const std::exception& e) {
@@ -399,7 +414,13 @@ void install_stop_handlers() {
 
 int run(int argc, char** argv, const catalogue::Catalogue& models, const Program& program) {
   install_stop_handlers();
-  const int code = run_command(argc, argv, models, program);
+  MpiRun mpi(argc, argv);
+  if (mpi.size() > 1 && checker::distributed() == nullptr)
+    return print_error(program_name(program, argc, argv),
+                       "launched as " + std::to_string(mpi.size()) +
+                           " processes, but this tioa-check was built without MPI "
+                           "(install libopenmpi-dev and build again)");
+  const int code = mpi.finish(run_command(argc, argv, models, program));
   // A report that did not reach standard output (a full disk, a closed pipe) is lost: a CI
   // job must not read that as success.
   errno = 0;

@@ -115,6 +115,7 @@ Json property_json(const ModelRun& run, const checker::PropertyResult& r, bool w
   out["depth"] = r.depth;
   out["seconds"] = r.seconds;
   out["threads"] = r.threads;
+  out["ranks"] = r.ranks;
   out["por"] = r.por;
   if (r.por)
     out["reduced_states"] = r.reduced_states;

@@ -109,8 +109,9 @@ void print_property_block(std::ostream& out, const ModelRun& run, const checker:
   if (!r.description.empty())
     out << "   " << r.description << '\n';
   out << "   " << r.message << '\n';
-  out << fmt::format("   states {}  edges {}  depth {}  seconds {:.3f}  threads {}\n", r.states,
-                     r.edges, r.depth, r.seconds, r.threads);
+  out << fmt::format("   states {}  edges {}  depth {}  seconds {:.3f}  threads {}{}\n", r.states,
+                     r.edges, r.depth, r.seconds, r.threads,
+                     r.ranks > 1 ? fmt::format("  ranks {}", r.ranks) : "");
   out << "   coverage: " << checker::describe(r.coverage) << '\n';
   if (r.por && r.reduced_states > 0) // with none, the graph explored is the full one
     out << "   zero-time steps reduced (--por on): " << r.reduced_states

@@ -1,0 +1,55 @@
+#pragma once
+// Breadth-first exploration over the ranks of a distributed run (issue 18), level by
+// level. Each rank owns the states whose hash maps to it (owner_of()), keeps them in a
+// store of its own, expands the ones of the frontier it owns and sends each successor, in
+// batches, to its owner; a level ends when every rank has expanded its share (the
+// exchange is collective, so the ranks stay in step and need no termination detection).
+//
+// The same ids as one process: a state's id is the one a sequential search gives it. A
+// new state keeps its smallest discovery key (the id of the state it was found from, the
+// index of the step), as discovery.hpp does for threads; at the end of a level every rank
+// learns every rank's sorted keys (8 bytes per new state of the level, on every rank) and
+// numbers its own states by their place among them. So the counts, the first target
+// found (smallest id), the depth and the trace (rebuilt across ranks by asking the owner
+// of each parent in turn) are those of one process.
+//
+// Not yet: threads within a rank, the fingerprint store, the partial-order reduction,
+// recorded edges, stuck states (deadlock), and the checks built on them; the state limit
+// is checked between levels (a run may pass it by up to one level, and says so).
+
+#include <optional>
+#include <vector>
+
+#include "checker/collective.hpp"
+#include "checker/exploration.hpp"
+#include "checker/options.hpp"
+#include "tioa/start_set.hpp"
+#include "tioa/successors.hpp"
+
+namespace checker {
+
+struct DistributedExploration {
+  std::uint64_t states = 0; // on every rank: the whole run's
+  std::uint64_t start_states = 0;
+  std::uint64_t edges = 0;
+  std::uint32_t depth = 0;
+  StopReason stop = StopReason::finished;
+  std::optional<std::uint64_t> found;      // the id of the first target
+  std::vector<std::vector<Word>> to_found; // the states from a start state to it
+  double seconds = 0;
+  std::size_t peak_rank_bytes = 0; // the largest resident memory of a rank
+  bool complete() const { return stop == StopReason::finished || stop == StopReason::found; }
+};
+
+// `target` (may be empty): the states to look for; the search stops at the level of the
+// first. Every rank calls it with the same arguments and gets the same result.
+DistributedExploration explore_distributed(const tioa::SuccessorGenerator& generator,
+                                           const tioa::StartSet& start,
+                                           const ExploreOptions& options,
+                                           const tioa::StatePredicate& target, Collective& ranks);
+
+// The rank that owns a state of this hash (state_hash.hpp), among `ranks`: from a mix of
+// the hash of its own, so that the states of a rank still spread over its whole table.
+int owner_of(std::uint64_t hash, int ranks);
+
+} // namespace checker

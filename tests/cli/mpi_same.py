@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+"""Distributed exploration (issue 18): under `mpirun -np N` every invariant of every
+built-in model (default instance, --por off, at most --max-states states) gives the same
+JSON result as one process: verdict, message, states, edges, depth, coverage and trace;
+only `seconds`, `threads` and `ranks` may differ, and `ranks` must be N. A property that
+does not run distributed yet must say so in one line on stderr with exit 2.
+
+usage: mpi_same.py TIOA_CHECK [--ranks 2 --ranks 4] [--max-states N]
+Exit 77 (skipped) when mpirun is missing or tioa-check was built without MPI."""
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+IGNORED = {"seconds", "threads", "ranks"}
+
+
+def strip(x):
+    if isinstance(x, dict):
+        return {k: strip(v) for k, v in x.items() if k not in IGNORED}
+    if isinstance(x, list):
+        return [strip(v) for v in x]
+    return x
+
+
+def properties(report):
+    return [p for m in report.get("models", [report]) for p in m["properties"]]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("tioa")
+    ap.add_argument("--ranks", type=int, action="append")
+    ap.add_argument("--max-states", type=int, default=30000)
+    args = ap.parse_args()
+    ranks = args.ranks or [2]
+    mpirun = shutil.which("mpirun")
+    if not mpirun:
+        print("SKIP: mpirun is not installed (apt-get install openmpi-bin libopenmpi-dev)")
+        return 77
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1")
+    probe = subprocess.run([mpirun, "-np", "2", args.tioa, "list"], env=env,
+                           capture_output=True, text=True, timeout=60)
+    if "built without MPI" in probe.stderr:
+        print("SKIP: tioa-check was built without MPI")
+        return 77
+    models = json.loads(subprocess.run([args.tioa, "list", "--json"], capture_output=True,
+                                       text=True, check=True).stdout)["models"]
+    failures, compared, refused = [], 0, 0
+    for model in models:
+        for prop in model["properties"]:
+            command = ["check", model["name"], "--prop", prop["name"], "--json", "--por",
+                       "off", "-j", "1", "--max-states", str(args.max_states),
+                       "--max-seconds", "20"]
+            one = subprocess.run([args.tioa] + command, capture_output=True, text=True,
+                                 timeout=120)
+            if one.returncode == 2:
+                continue  # not a check of this instance (a usage error): nothing to compare
+            mine = [p for p in properties(json.loads(one.stdout)) if p["name"] == prop["name"]]
+            if not mine or mine[0].get("kind") != "invariant":
+                continue
+            if mine[0]["verdict"] == "incomplete" and "time limit" in mine[0]["message"]:
+                continue  # where a time limit stops is not deterministic
+            for n in ranks:
+                label = f"{model['name']} {prop['name']} -np {n}"
+                run = subprocess.run([mpirun, "-np", str(n), args.tioa] + command, env=env,
+                                     capture_output=True, text=True, timeout=300)
+                if run.returncode == 2:
+                    lines = [l for l in run.stderr.splitlines() if "error:" in l]
+                    if len(lines) == 1 and "does not run distributed yet" in lines[0]:
+                        refused += 1
+                        print(f"refused {label}: {lines[0]}")
+                        continue
+                    failures.append(f"{label}: exit 2: {run.stderr.strip()[:400]}")
+                    continue
+                if run.returncode != one.returncode:
+                    failures.append(f"{label}: exit {run.returncode}, one process {one.returncode}")
+                    continue
+                theirs = [p for p in properties(json.loads(run.stdout))
+                          if p["name"] == prop["name"]]
+                if not theirs or theirs[0].get("ranks") != n:
+                    failures.append(f"{label}: no result with ranks = {n}")
+                    continue
+                if strip(theirs[0]) != strip(mine[0]):
+                    diff = [k for k in mine[0] if strip(mine[0][k]) != strip(theirs[0].get(k))]
+                    failures.append(f"{label}: differs in {diff}")
+                    continue
+                compared += 1
+                print(f"same {label}: {mine[0]['verdict']}, {mine[0]['states']} states, "
+                      f"{mine[0]['edges']} edges")
+    print(f"{compared} runs the same as one process, {refused} refused in one line")
+    for f in failures:
+        print("FAIL", f)
+    if compared == 0:
+        print("FAIL nothing compared")
+        return 1
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
