@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "checker/checks.hpp"
+#include "checker/distributed_checks.hpp"
 #include "checker/explorer.hpp"
 
 namespace checker {
@@ -15,6 +16,11 @@ PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& 
   std::optional<ZeroTimeReduction> reduction;
   if (options.por)
     reduction.emplace(generator, tioa::StatePredicate{});
+  if (Collective* ranks = distributed()) {
+    require_distributable(options, reduction ? &*reduction : nullptr);
+    return check_no_deadlock_distributed(generator, system.start(), ended, ended_name, options,
+                                         reduction.has_value(), *ranks);
+  }
   const Exploration ex =
       explore(generator, system.start(), options, hooks(), reduction ? &*reduction : nullptr);
   PropertyResult r = result_of("deadlock", ex, generator);

@@ -23,6 +23,8 @@ constexpr std::uint32_t no_id = 0xffffffffu;
 
 // Frontier states a rank expands before an exchange: bounds what a round sends.
 constexpr std::size_t round_states = 1 << 14;
+// Start states every rank enumerates between two looks at the limits.
+constexpr std::uint64_t start_round = 1 << 16;
 
 // One rank's states: its store, and for each state (by local id) its discovery key and its
 // id in the whole run (no_id until its level is numbered).
@@ -151,7 +153,8 @@ int owner_of(std::uint64_t hash, int ranks) {
 DistributedExploration explore_distributed(const tioa::SuccessorGenerator& generator,
                                            const tioa::StartSet& start,
                                            const ExploreOptions& options,
-                                           const tioa::StatePredicate& target, Collective& ranks) {
+                                           const tioa::StatePredicate& target,
+                                           const tioa::StatePredicate& ended, Collective& ranks) {
   const auto began = std::chrono::steady_clock::now();
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
@@ -160,6 +163,12 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
   const std::uint32_t words = generator.words();
   const int me = ranks.rank(), size = ranks.size();
   DistributedExploration out;
+  // What the property's budget has left (options.hpp): nothing left, nothing explored.
+  const std::uint64_t max_states = limits.states_left();
+  if (limits.states_exhausted()) {
+    out.stop = StopReason::state_limit;
+    return out;
+  }
   RankStates rs(words);
   std::size_t peak = 0;
 
@@ -191,34 +200,55 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
   // counts (expansion.hpp), so only a target among those counts.
   auto level_done = [&](const std::vector<StateId>& fresh) -> std::optional<StopReason> {
     const std::uint64_t found = first_target(rs, fresh, target, ranks);
-    if (found != no_id && (!limits.max_states || found < limits.max_states)) {
+    if (found != no_id && (!max_states || found < max_states)) {
       out.found = found;
       return StopReason::found;
     }
-    if (limits.max_states && out.states > limits.max_states) {
-      out.states = limits.max_states;
+    if (max_states && out.states > max_states) {
+      out.states = max_states;
       return StopReason::state_limit;
     }
     return std::nullopt;
   };
 
-  // Level 0: every rank enumerates the start set and keeps the states it owns.
+  // Level 0: every rank enumerates the start set and keeps the states it owns. Every
+  // start_round states enumerated (the same on every rank) the ranks stop together at a
+  // target, the state limit or a time or memory limit, as one process stops inserting them
+  // (start_insertion.hpp): the states enumerated so far are there, so the ids are right.
+  struct StopEnumeration {};
   std::vector<StateId> fresh;
+  std::optional<StopReason> stop;
   {
     std::vector<Word> buffer(words + 1, 0);
-    std::uint64_t index = 0;
-    start.enumerate(buffer.data(), 0, [&] {
-      const std::uint64_t i = index++;
-      if (owner_of(hash_state(buffer.data(), words), size) != me)
-        return;
-      if (const auto local = rs.offer(buffer.data(), start_key_bit | i))
-        fresh.push_back(*local);
-    });
+    std::uint64_t index = 0, targets = 0;
+    auto enough = [&]() -> bool {
+      const bool found = ranks.max(targets) > 0;
+      if (!found && max_states && ranks.sum(fresh.size()) > max_states)
+        return true;
+      if (!found)
+        stop = stop_now();
+      return found || stop;
+    };
+    try {
+      start.enumerate(buffer.data(), 0, [&] {
+        const std::uint64_t i = index++;
+        if (owner_of(hash_state(buffer.data(), words), size) == me)
+          if (const auto local = rs.offer(buffer.data(), start_key_bit | i)) {
+            fresh.push_back(*local);
+            if (target && target(tioa::State(buffer.data(), 0)))
+              ++targets;
+          }
+        if (index % start_round == 0 && enough())
+          throw StopEnumeration{};
+      });
+    } catch (const StopEnumeration&) {
+    }
   }
   std::uint64_t level_first = 0;
-  std::uint64_t level_size = number_level(rs, fresh, level_first, ranks);
+  std::uint64_t level_size = stop ? 0 : number_level(rs, fresh, level_first, ranks);
   out.states = out.start_states = level_size;
-  std::optional<StopReason> stop = level_done(fresh);
+  if (!stop)
+    stop = level_done(fresh);
   if (!stop)
     stop = stop_now();
 
@@ -226,6 +256,7 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
   std::vector<std::vector<std::uint8_t>> to(static_cast<std::size_t>(size));
   std::vector<std::uint64_t> offsets(static_cast<std::size_t>(size) + 1);
   std::vector<Word> scratch(words + 1, 0);
+  std::uint64_t first_stuck = no_id;
   const std::size_t record = words * sizeof(Word) + 8;
   while (level_size > 0 && !stop) {
     std::vector<StateId> frontier;
@@ -240,13 +271,22 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
         const StateId s = frontier[f];
         const std::uint64_t from = rs.id[s];
         std::uint32_t step = 0;
-        out.edges += generator.successors(
+        const std::size_t n = generator.successors(
             rs.store.state(s), scratch.data(), [&](const Word* succ, const tioa::StepLabel&) {
               const std::uint64_t k = step_key(from, step++);
               auto& t = to[static_cast<std::size_t>(owner_of(hash_state(succ, words), size))];
               put(t, succ, words * sizeof(Word));
               put(t, &k, 8);
             });
+        out.edges += n;
+        if (n > 0)
+          continue;
+        if (ended && ended(tioa::State(rs.store.state(s), 0))) {
+          ++out.ended;
+        } else {
+          ++out.stuck;
+          first_stuck = std::min<std::uint64_t>(first_stuck, from);
+        }
       }
       send.clear();
       for (int r = 0; r < size; ++r) {
@@ -275,12 +315,21 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
     stop = level_done(fresh);
   }
   out.edges = ranks.sum(out.edges);
+  out.ended = ranks.sum(out.ended);
+  out.stuck = ranks.sum(out.stuck);
+  if (const std::uint64_t first = ranks.min(first_stuck); first != no_id) {
+    out.first_stuck = first;
+    out.to_first_stuck = path_to(rs, first, ranks);
+  }
   if (stop && *stop != StopReason::found && *stop != StopReason::state_limit)
     out.states = ranks.sum(rs.store.size()); // a level cut short: what each rank holds
   if (out.found) {
     out.states = *out.found + 1; // a sequential search stops at the target
     out.to_found = path_to(rs, *out.found, ranks);
   }
+  limits.spend_states(out.states); // (every rank: each holds the property's budget)
+  if (out.depth == 0) // stopped in level 0: the start states it has
+    out.start_states = out.states;
   if (stop)
     out.stop = *stop;
   out.peak_rank_bytes = ranks.max(std::max<std::uint64_t>(peak, resident_bytes()));

@@ -36,17 +36,24 @@ struct DistributedExploration {
   StopReason stop = StopReason::finished;
   std::optional<std::uint64_t> found;      // the id of the first target
   std::vector<std::vector<Word>> to_found; // the states from a start state to it
+  // Expanded states with no successor: those `ended` calls proper ends, and the others
+  // (stuck), with the first of them (smallest id) and the states to it.
+  std::uint64_t ended = 0, stuck = 0;
+  std::optional<std::uint64_t> first_stuck;
+  std::vector<std::vector<Word>> to_first_stuck;
   double seconds = 0;
   std::size_t peak_rank_bytes = 0; // the largest resident memory of a rank
   bool complete() const { return stop == StopReason::finished || stop == StopReason::found; }
 };
 
 // `target` (may be empty): the states to look for; the search stops at the level of the
-// first. Every rank calls it with the same arguments and gets the same result.
+// first. `ended` (may be empty): the states with no successor that are proper ends.
+// Every rank calls it with the same arguments and gets the same result.
 DistributedExploration explore_distributed(const tioa::SuccessorGenerator& generator,
                                            const tioa::StartSet& start,
                                            const ExploreOptions& options,
-                                           const tioa::StatePredicate& target, Collective& ranks);
+                                           const tioa::StatePredicate& target,
+                                           const tioa::StatePredicate& ended, Collective& ranks);
 
 // The rank that owns a state of this hash (state_hash.hpp), among `ranks`: from a mix of
 // the hash of its own, so that the states of a rank still spread over its whole table.

@@ -35,7 +35,8 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   // Every check explores through here, except those that run distributed
   // (distributed_explorer.hpp): under mpirun the others say so rather than run once per rank.
   if (distributed())
-    throw NotDistributed("this property does not run distributed yet (invariants do): run it "
+    throw NotDistributed("this property does not run distributed yet (invariants and deadlock / "
+                         "time-lock checks do): run it "
                          "without mpirun");
   const Limits& limits = options.limits;
   const bool fingerprints = options.store == StoreKind::fingerprint;

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Distributed exploration (issue 18): under `mpirun -np N` every invariant of every
-built-in model (default instance, --por off, at most --max-states states) gives the same
-JSON result as one process: verdict, message, states, edges, depth, coverage and trace;
+"""Distributed exploration (issue 18): under `mpirun -np N` every invariant and every
+deadlock / time-lock check of every built-in model (default instance, --por off, at most
+--max-states states) gives the same JSON result as one process: verdict, message, states, edges, depth, coverage and trace;
 only `seconds`, `threads` and `ranks` may differ, and `ranks` must be N. A property that
 does not run distributed yet must say so in one line on stderr with exit 2.
 
@@ -60,7 +60,7 @@ def main():
             if one.returncode == 2:
                 continue  # not a check of this instance (a usage error): nothing to compare
             mine = [p for p in properties(json.loads(one.stdout)) if p["name"] == prop["name"]]
-            if not mine or mine[0].get("kind") != "invariant":
+            if not mine or mine[0].get("kind") not in ("invariant", "deadlock"):
                 continue
             if mine[0]["verdict"] == "incomplete" and "time limit" in mine[0]["message"]:
                 continue  # where a time limit stops is not deterministic
@@ -91,6 +91,35 @@ def main():
                 compared += 1
                 print(f"same {label}: {mine[0]['verdict']}, {mine[0]['states']} states, "
                       f"{mine[0]['edges']} edges")
+    # From every valuation (U(A)): a large start set, the limits met in level 0.
+    for model in models:
+        command = ["explore", model["name"], "--from", "arbitrary", "--json", "--por", "off",
+                   "-j", "1", "--max-states", "20000", "--max-seconds", "20"]
+        one = subprocess.run([args.tioa] + command, capture_output=True, text=True, timeout=120)
+        if one.returncode == 2:
+            continue
+        mine = properties(json.loads(one.stdout))
+        if any("time limit" in p["message"] for p in mine):
+            continue
+        for n in ranks:
+            label = f"explore {model['name']} --from arbitrary -np {n}"
+            run = subprocess.run([mpirun, "-np", str(n), args.tioa] + command, env=env,
+                                 capture_output=True, text=True, timeout=300)
+            lines = [l for l in run.stderr.splitlines() if "error:" in l]
+            if run.returncode == 2 and len(lines) == 1 and "distributed yet" in lines[0]:
+                refused += 1
+                print(f"refused {label}: {lines[0]}")
+                continue
+            if run.returncode != one.returncode:
+                failures.append(f"{label}: exit {run.returncode}, one process {one.returncode}")
+                continue
+            theirs = properties(json.loads(run.stdout))
+            if strip(theirs) != strip(mine):
+                failures.append(f"{label}: differs")
+                continue
+            compared += 1
+            print(f"same {label}: " + ", ".join(f"{p['name']} {p['verdict']} {p['states']}"
+                                                 for p in mine))
     print(f"{compared} runs the same as one process, {refused} refused in one line")
     for f in failures:
         print("FAIL", f)

@@ -1,0 +1,107 @@
+#include "checker/distributed_checks.hpp"
+
+#include "checker/distributed_explorer.hpp"
+#include "checker/trace.hpp"
+
+namespace checker {
+
+namespace {
+
+// The figures every result has (result_of() for one process).
+PropertyResult figures_of(const std::string& kind, const DistributedExploration& ex,
+                          const tioa::SuccessorGenerator& generator, bool por, Collective& ranks) {
+  PropertyResult r;
+  r.kind = kind;
+  r.states = ex.states;
+  r.edges = ex.edges;
+  r.depth = ex.depth;
+  r.seconds = ex.seconds;
+  r.ranks = static_cast<unsigned>(ranks.size());
+  r.por = por;
+  r.time_unit = generator.timed() ? "quanta" : "steps";
+  r.coverage = {Starts::all, ex.start_states, ex.start_states, "the start states", ""};
+  return r;
+}
+
+Trace trace_through(const tioa::SuccessorGenerator& generator,
+                    const std::vector<std::vector<Word>>& states) {
+  Trace trace;
+  trace.steps.push_back({"", 0, states.front()});
+  for (std::size_t i = 1; i < states.size(); ++i)
+    extend(generator, trace, states[i].data());
+  return trace;
+}
+
+void mark_cut_short(PropertyResult& r, const DistributedExploration& ex,
+                    const std::string& covered) {
+  r.verdict = Verdict::incomplete;
+  r.message = std::string(describe(ex.stop)) + " after " + std::to_string(ex.states) +
+              " states to depth " + std::to_string(ex.depth) + ": " + covered;
+}
+
+} // namespace
+
+void require_distributable(const ExploreOptions& options, const ZeroTimeReduction* reduction) {
+  if (options.store == StoreKind::fingerprint)
+    throw NotDistributed("the fingerprint store does not run distributed yet: use the exact "
+                         "store");
+  if (reduction && reduction->can_reduce())
+    throw NotDistributed("the partial-order reduction does not run distributed yet: use "
+                         "--por off");
+}
+
+PropertyResult check_invariant_distributed(const tioa::SuccessorGenerator& generator,
+                                           const tioa::StartSet& start,
+                                           const tioa::StatePredicate& invariant,
+                                           const ExploreOptions& options, bool por,
+                                           Collective& ranks) {
+  const DistributedExploration ex = explore_distributed(
+      generator, start, options, [&](const tioa::State& s) { return !invariant(s); }, {}, ranks);
+  PropertyResult r = figures_of("invariant", ex, generator, por, ranks);
+  if (ex.found) {
+    r.verdict = Verdict::violated;
+    r.trace = trace_through(generator, ex.to_found);
+    r.trace_role = "counterexample";
+    r.trace_kind = "invariant";
+    r.message = "a reachable state breaks the invariant; shortest trace: " +
+                std::to_string(r.trace->length()) + " steps";
+  } else if (!ex.complete()) {
+    mark_cut_short(r, ex, "no violation in the states covered");
+  } else {
+    r.verdict = Verdict::holds;
+    r.message = "all " + std::to_string(r.states) + " reachable states satisfy it";
+  }
+  return r;
+}
+
+PropertyResult check_no_deadlock_distributed(const tioa::SuccessorGenerator& generator,
+                                             const tioa::StartSet& start,
+                                             const tioa::StatePredicate& ended,
+                                             const std::string& ended_name,
+                                             const ExploreOptions& options, bool por,
+                                             Collective& ranks) {
+  const DistributedExploration ex =
+      explore_distributed(generator, start, options, {}, ended, ranks);
+  PropertyResult r = figures_of("deadlock", ex, generator, por, ranks);
+  const char* what = generator.timed() ? "time-lock" : "deadlock";
+  if (ex.ended > 0)
+    r.notes.push_back(std::to_string(ex.ended) +
+                      " reachable states with no action are proper ends (" + ended_name +
+                      "), not " + what + "s");
+  if (ex.first_stuck) {
+    r.verdict = Verdict::violated;
+    r.trace = trace_through(generator, ex.to_first_stuck);
+    r.trace_role = "counterexample";
+    r.trace_kind = what;
+    r.message = std::to_string(ex.stuck) + " reachable states with no action" +
+                (generator.timed() ? " and no tick" : "") + " (" + what + ")";
+  } else if (!ex.complete()) {
+    mark_cut_short(r, ex, std::string("no ") + what + " in the states covered");
+  } else {
+    r.verdict = Verdict::holds;
+    r.message = std::string("no ") + what + " in " + std::to_string(r.states) + " reachable states";
+  }
+  return r;
+}
+
+} // namespace checker

@@ -1,0 +1,34 @@
+#pragma once
+// The checks that run over the ranks of a distributed run (distributed_explorer.hpp), with
+// the results one process gives: check_invariant and check_no_deadlock take this route
+// when distributed() is set.
+
+#include <string>
+
+#include "checker/collective.hpp"
+#include "checker/result.hpp"
+#include "checker/zero_time_reduction.hpp"
+#include "tioa/start_set.hpp"
+#include "tioa/successors.hpp"
+
+namespace checker {
+
+// Throws NotDistributed for what does not run distributed yet: the fingerprint store, and
+// a reduction that would act (`reduction`: the one the check would use, or null).
+void require_distributable(const ExploreOptions& options, const ZeroTimeReduction* reduction);
+
+// `por`: the reduction was asked for (and, require_distributable passed, has nothing to
+// reduce): the report says so, as one process's does.
+PropertyResult check_invariant_distributed(const tioa::SuccessorGenerator& generator,
+                                           const tioa::StartSet& start,
+                                           const tioa::StatePredicate& invariant,
+                                           const ExploreOptions& options, bool por,
+                                           Collective& ranks);
+PropertyResult check_no_deadlock_distributed(const tioa::SuccessorGenerator& generator,
+                                             const tioa::StartSet& start,
+                                             const tioa::StatePredicate& ended,
+                                             const std::string& ended_name,
+                                             const ExploreOptions& options, bool por,
+                                             Collective& ranks);
+
+} // namespace checker
