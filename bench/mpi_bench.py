@@ -19,6 +19,8 @@ CASES = {
     "fischer-9": ["check", "fischer", "-p", "N=9", "--prop", "mutex"],
     "fischer-10": ["check", "fischer", "-p", "N=10", "--prop", "mutex"],
     "ring-8-9": ["check", "token-ring", "-p", "N=8,K=9", "--prop", "some-privileged"],
+    # bench_vlayer's 2x2-r2-n4 time-lock check, in full (--por off): 55.6 million states
+    "vlayer-2x2-r2": ["check", "vlayer-mc", "-p", "rows=2,robots=2", "--prop", "no-timelock"],
 }
 
 
