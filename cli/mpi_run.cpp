@@ -27,8 +27,8 @@ bool secondary = false;
 std::string held_error; // a secondary rank's error line, printed only if it is its own
 
 #ifdef TIOA_WITH_MPI
-// The checker's collective calls over MPI_COMM_WORLD. Messages are cut into pieces of at
-// most 1 GiB (MPI counts are ints).
+// The checker's collective calls over MPI_COMM_WORLD. Messages are cut into rounds that
+// MPI's int counts can say.
 class MpiCollective final : public checker::Collective {
 public:
   MpiCollective(int rank, int size) : rank_(rank), size_(size) {}
@@ -47,44 +47,43 @@ public:
     for (std::size_t r = 0; r < n; ++r)
       receive_at[r + 1] = receive_at[r] + receive_sizes[r];
     std::vector<std::uint8_t> out(receive_at[n]);
-    // Rounds of at most `piece` bytes per pair until every pair is done.
+    // Rounds of at most `piece` bytes per pair until every pair is done; a round's counts
+    // and displacements are ints, so the n pairs of a round stay under 2^31 bytes.
+    const std::uint64_t piece = std::uint64_t{std::numeric_limits<int>::max()} / n;
     std::uint64_t longest = 0;
     for (std::size_t r = 0; r < n; ++r)
       longest = std::max({longest, send_sizes[r], receive_sizes[r]});
     longest = max(longest);
     std::vector<int> sc(n), sd(n), rc(n), rd(n);
-    for (std::uint64_t done = 0; done < longest || done == 0; done += piece) {
-      // Displacements are ints too: each round sends from a base of its own per rank.
-      std::vector<std::uint8_t> send_round, receive_round;
+    std::vector<std::uint8_t> send_round, receive_round;
+    // The counts and displacements of this round for the pairs' `sizes`; returns the total.
+    auto round_counts = [&](const std::vector<std::uint64_t>& sizes, std::uint64_t done,
+                            std::vector<int>& counts, std::vector<int>& displacements) {
       int at = 0;
       for (std::size_t r = 0; r < n; ++r) {
-        const std::uint64_t left = send_sizes[r] > done ? send_sizes[r] - done : 0;
-        sc[r] = static_cast<int>(std::min<std::uint64_t>(left, piece));
-        sd[r] = at;
-        at += sc[r];
+        const std::uint64_t left = sizes[r] > done ? sizes[r] - done : 0;
+        counts[r] = static_cast<int>(std::min(left, piece));
+        displacements[r] = at;
+        at += counts[r];
       }
-      send_round.resize(static_cast<std::size_t>(at));
+      return static_cast<std::size_t>(at);
+    };
+    std::uint64_t done = 0;
+    do {
+      send_round.resize(round_counts(send_sizes, done, sc, sd));
       for (std::size_t r = 0; r < n; ++r)
         if (sc[r] > 0)
           std::memcpy(send_round.data() + sd[r], data.data() + offsets[r] + done,
                       static_cast<std::size_t>(sc[r]));
-      at = 0;
-      for (std::size_t r = 0; r < n; ++r) {
-        const std::uint64_t left = receive_sizes[r] > done ? receive_sizes[r] - done : 0;
-        rc[r] = static_cast<int>(std::min<std::uint64_t>(left, piece));
-        rd[r] = at;
-        at += rc[r];
-      }
-      receive_round.resize(static_cast<std::size_t>(at));
+      receive_round.resize(round_counts(receive_sizes, done, rc, rd));
       MPI_Alltoallv(send_round.data(), sc.data(), sd.data(), MPI_BYTE, receive_round.data(),
                     rc.data(), rd.data(), MPI_BYTE, MPI_COMM_WORLD);
       for (std::size_t r = 0; r < n; ++r)
         if (rc[r] > 0)
           std::memcpy(out.data() + receive_at[r] + done, receive_round.data() + rd[r],
                       static_cast<std::size_t>(rc[r]));
-      if (longest == 0)
-        break;
-    }
+      done += piece;
+    } while (done < longest);
     return out;
   }
 
@@ -116,7 +115,6 @@ public:
   std::uint64_t max(std::uint64_t value) override { return reduce(value, MPI_MAX); }
 
 private:
-  static constexpr std::uint64_t piece = std::uint64_t{1} << 30;
   std::uint64_t reduce(std::uint64_t value, MPI_Op op) {
     std::uint64_t out = 0;
     MPI_Allreduce(&value, &out, 1, MPI_UINT64_T, op, MPI_COMM_WORLD);
