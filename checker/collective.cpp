@@ -3,8 +3,10 @@
 namespace checker {
 
 namespace {
-Collective* the_ranks = nullptr;
-}
+// Per thread: the thread that runs the checks is the rank (a test runs several ranks as
+// threads of one process, tests/checker/thread_ranks.hpp).
+thread_local Collective* the_ranks = nullptr;
+} // namespace
 
 Collective* distributed() {
   return the_ranks;

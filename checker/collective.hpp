@@ -6,6 +6,7 @@
 //
 // Every call is collective: every rank makes the same calls in the same order.
 
+#include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
@@ -29,9 +30,16 @@ public:
   virtual std::uint64_t max(std::uint64_t value) = 0;
 };
 
+// Appends `bytes` bytes from `data` to `out` (a message being built).
+inline void append_bytes(std::vector<std::uint8_t>& out, const void* data, std::size_t bytes) {
+  const auto* p = static_cast<const std::uint8_t*>(data);
+  out.insert(out.end(), p, p + bytes);
+}
+
 // The ranks of this run when it runs distributed (more than one process), else null.
 Collective* distributed();
-// Set once by the program that runs under mpirun (null: one process).
+// Set once by the program that runs under mpirun (null: one process), for the thread that
+// runs the checks.
 void set_distributed(Collective* ranks);
 
 // A check asked for in a distributed run that runs on one process only: one clear line,

@@ -50,12 +50,6 @@ struct RankStates {
   }
 };
 
-// Appends `bytes` bytes from `data` to `out`.
-void put(std::vector<std::uint8_t>& out, const void* data, std::size_t bytes) {
-  const auto* p = static_cast<const std::uint8_t*>(data);
-  out.insert(out.end(), p, p + bytes);
-}
-
 // Numbers the level's new states (local ids `fresh`) as one process would: by their keys
 // among every rank's; `first` is the id of the level's first state. Returns the level's
 // size over all ranks and leaves `fresh` in id order.
@@ -66,7 +60,7 @@ std::uint64_t number_level(RankStates& rs, std::vector<StateId>& fresh, std::uin
   std::vector<std::uint8_t> mine;
   mine.reserve(fresh.size() * 8);
   for (StateId s : fresh)
-    put(mine, &rs.key[s], 8);
+    append_bytes(mine, &rs.key[s], 8);
   std::vector<std::uint64_t> sizes;
   const std::vector<std::uint8_t> all = ranks.all_gather(mine, sizes);
   std::uint64_t total = 0;
@@ -119,8 +113,8 @@ std::vector<std::vector<Word>> path_to(const RankStates& rs, std::uint64_t id, C
     const auto it = std::lower_bound(rs.by_id.begin(), rs.by_id.end(),
                                      std::make_pair(static_cast<std::uint32_t>(id), StateId{0}));
     if (it != rs.by_id.end() && it->first == id) {
-      put(mine, rs.store.state(it->second), words * sizeof(Word));
-      put(mine, &rs.key[it->second], 8);
+      append_bytes(mine, rs.store.state(it->second), words * sizeof(Word));
+      append_bytes(mine, &rs.key[it->second], 8);
     }
     std::vector<std::uint64_t> sizes;
     const std::vector<std::uint8_t> all = ranks.all_gather(mine, sizes);
@@ -275,8 +269,8 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
             rs.store.state(s), scratch.data(), [&](const Word* succ, const tioa::StepLabel&) {
               const std::uint64_t k = step_key(from, step++);
               auto& t = to[static_cast<std::size_t>(owner_of(hash_state(succ, words), size))];
-              put(t, succ, words * sizeof(Word));
-              put(t, &k, 8);
+              append_bytes(t, succ, words * sizeof(Word));
+              append_bytes(t, &k, 8);
             });
         out.edges += n;
         if (n > 0)
@@ -328,7 +322,7 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
     out.to_found = path_to(rs, *out.found, ranks);
   }
   limits.spend_states(out.states); // (every rank: each holds the property's budget)
-  if (out.depth == 0) // stopped in level 0: the start states it has
+  if (out.depth == 0)              // stopped in level 0: the start states it has
     out.start_states = out.states;
   if (stop)
     out.stop = *stop;

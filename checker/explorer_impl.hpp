@@ -35,9 +35,9 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   // Every check explores through here, except those that run distributed
   // (distributed_explorer.hpp): under mpirun the others say so rather than run once per rank.
   if (distributed())
-    throw NotDistributed("this property does not run distributed yet (invariants and deadlock / "
-                         "time-lock checks do): run it "
-                         "without mpirun");
+    throw NotDistributed("this property does not run distributed yet (invariants, deadlock / "
+                         "time-lock checks and the legal-set closure do): run it without "
+                         "mpirun");
   const Limits& limits = options.limits;
   const bool fingerprints = options.store == StoreKind::fingerprint;
   // Representatives and edges are read as states after the run: the fingerprint store has

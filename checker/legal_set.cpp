@@ -1,6 +1,7 @@
 #include <vector>
 
 #include "checker/checks.hpp"
+#include "checker/closure_scan.hpp"
 #include "checker/interrupt.hpp"
 #include "checker/progress.hpp"
 #include "tioa/start_set.hpp"
@@ -8,82 +9,100 @@
 namespace checker {
 
 namespace {
-struct StopEnumeration {};
-} // namespace
 
-PropertyResult check_legal_set(const Automaton& system, const StatePredicate& legal,
-                               const ExploreOptions& options) {
-  require_exact_store(options, "the legal-set check");
-  const tioa::SuccessorGenerator generator(system);
+struct StopEnumeration {};
+
+// The scan of one process (closure_scan.hpp).
+ClosureScan scan_closure(const tioa::SuccessorGenerator& generator, const tioa::StateLayout& layout,
+                         const StatePredicate& legal, const Limits& limits, Progress& progress) {
   const std::uint32_t words = generator.words();
-  Progress progress(options.progress, options.task.empty() ? "closure" : options.task);
+  ClosureScan out;
   // L is found among every valuation, most of which may be outside it (token-ring N=9, K=9:
   // 585 members among 9^9): the limits are checked there too, not only at its members.
-  std::string limit;
-  // Sets `limit` when the run must stop (a signal, the time limit); true then.
+  // Sets out.limit when the run must stop (a signal, the time limit); true then.
   const auto out_of_limits = [&] {
     if (interrupted())
-      limit = "interrupted";
-    else if (options.limits.out_of_time(progress.elapsed()))
-      limit = "time limit reached";
-    return !limit.empty();
+      out.limit = "interrupted";
+    else if (limits.out_of_time(progress.elapsed()))
+      out.limit = "time limit reached";
+    return !out.limit.empty();
   };
   std::uint64_t tried = 0;
   const tioa::StartSet members = tioa::StartSet::satisfying(
-      system.layout(),
+      layout,
       [&](const tioa::State& s) {
         if ((++tried & 0xffff) == 0 && out_of_limits())
           throw StopEnumeration{};
         return legal(s);
       },
       "the legal set");
-
-  PropertyResult r;
-  r.kind = "legal-set";
-  r.threads = 1; // one pass over the members of L, in enumeration order
-  r.time_unit = generator.timed() ? "quanta" : "steps";
   std::vector<Word> state(words + 1, 0), scratch(words + 1, 0);
-  std::optional<std::vector<Word>> bad_from, bad_to;
-  const std::uint64_t max_states = options.limits.states_left();
-  const bool exhausted = options.limits.states_exhausted();
+  const std::uint64_t max_states = limits.states_left();
+  const bool exhausted = limits.states_exhausted();
   try {
     members.enumerate(state.data(), 0, [&] {
-      if (exhausted || (max_states && r.states >= max_states)) {
-        limit = "state limit reached";
+      if (exhausted || (max_states && out.members >= max_states)) {
+        out.limit = "state limit reached";
         throw StopEnumeration{};
       }
-      ++r.states;
-      r.edges += generator.successors(state.data(), scratch.data(),
-                                      [&](const Word* succ, const tioa::StepLabel&) {
-                                        if (!bad_from && !legal(tioa::State(succ, 0))) {
-                                          bad_from.emplace(state.begin(), state.begin() + words);
-                                          bad_to.emplace(succ, succ + words);
-                                        }
-                                      });
-      if (bad_from)
+      ++out.members;
+      out.edges += generator.successors(
+          state.data(), scratch.data(), [&](const Word* succ, const tioa::StepLabel&) {
+            if (!out.bad_from && !legal(tioa::State(succ, 0))) {
+              out.bad_from.emplace(state.begin(), state.begin() + words);
+              out.bad_to.emplace(succ, succ + words);
+            }
+          });
+      if (out.bad_from)
         throw StopEnumeration{};
-      if ((r.states & 0xfff) == 0) {
-        progress.update(r.states, 0, 0);
+      if ((out.members & 0xfff) == 0) {
+        progress.update(out.members, 0, 0);
         if (out_of_limits())
           throw StopEnumeration{};
       }
     });
   } catch (const StopEnumeration&) {
   }
+  return out;
+}
+
+} // namespace
+
+PropertyResult check_legal_set(const Automaton& system, const StatePredicate& legal,
+                               const ExploreOptions& options) {
+  require_exact_store(options, "the legal-set check");
+  const auto began = ScanClock::now();
+  const tioa::SuccessorGenerator generator(system);
+  Progress progress(options.progress, options.task.empty() ? "closure" : options.task);
+
+  PropertyResult r;
+  r.kind = "legal-set";
+  r.threads = 1; // one pass over the members of L, in enumeration order
+  r.time_unit = generator.timed() ? "quanta" : "steps";
+  ClosureScan scan;
+  if (Collective* ranks = distributed()) {
+    scan =
+        scan_closure_distributed(generator, system.layout(), legal, options.limits, began, *ranks);
+    r.ranks = static_cast<unsigned>(ranks->size());
+  } else {
+    scan = scan_closure(generator, system.layout(), legal, options.limits, progress);
+  }
+  r.states = scan.members;
+  r.edges = scan.edges;
   options.limits.spend_states(r.states);
   r.seconds = progress.elapsed();
-  if (bad_from) {
+  if (scan.bad_from) {
     r.verdict = Verdict::violated;
     Trace trace;
-    trace.steps.push_back({"", 0, *bad_from});
-    extend(generator, trace, bad_to->data());
+    trace.steps.push_back({"", 0, *scan.bad_from});
+    extend(generator, trace, scan.bad_to->data());
     r.trace = std::move(trace);
     r.trace_role = "counterexample";
     r.trace_kind = "closure-step";
     r.message = "a step leaves the legal set from one of its states";
-  } else if (!limit.empty()) {
+  } else if (!scan.limit.empty()) {
     r.verdict = Verdict::incomplete;
-    r.message = limit + " after " + std::to_string(r.states) +
+    r.message = scan.limit + " after " + std::to_string(r.states) +
                 " states of the legal set, all closed so far";
   } else if (r.states == 0) {
     r.verdict = Verdict::violated;
@@ -96,7 +115,7 @@ PropertyResult check_legal_set(const Automaton& system, const StatePredicate& le
   // Every member of L is enumerated, so the closure covers all of them (how many is known
   // when the enumeration finished).
   r.coverage = {Starts::all, r.states, std::nullopt, "the legal set", ""};
-  if (!bad_from && limit.empty())
+  if (!scan.bad_from && scan.limit.empty())
     r.coverage.of = r.states;
   return r;
 }

@@ -21,6 +21,13 @@ using tioa::State;
 using tioa::Word;
 using Words = std::vector<Word>;
 
+// Options with the partial-order reduction on or off.
+inline checker::ExploreOptions with_por(bool on) {
+  checker::ExploreOptions options;
+  options.por = on;
+  return options;
+}
+
 // A state of `a`: every variable at code 0, then `fill` applied.
 inline Words make_state(const tioa::Automaton& a, const std::function<void(State&)>& fill) {
   Words w(a.words() + 1, 0);

@@ -10,9 +10,11 @@
 #include "checker/checks.hpp"
 #include "checker/property.hpp"
 #include "checker/trace.hpp"
+#include "tests/checker/helpers.hpp"
 #include "tioa/successors.hpp"
 
 using namespace checker;
+using checker_test::with_por;
 using tioa::Automaton;
 using tioa::Params;
 using tioa::State;
@@ -84,12 +86,6 @@ Counters counters(const CountersSpec& spec) {
     });
   }
   return c;
-}
-
-ExploreOptions with_por(bool on) {
-  ExploreOptions options;
-  options.por = on;
-  return options;
 }
 
 tioa::StatePredicate all_done(const Counters& c) {

@@ -12,6 +12,7 @@
 #include "tioa/compose.hpp"
 
 using namespace checker;
+using checker_test::with_por;
 using tioa::Automaton;
 using tioa::Params;
 using tioa::State;
@@ -114,12 +115,6 @@ Automaton listener(int i, int period) {
       });
   a.trajectories([](State&) {}, [=](const State& s) { return s[pending]; });
   return a;
-}
-
-ExploreOptions with_por(bool on) {
-  ExploreOptions options;
-  options.por = on;
-  return options;
 }
 
 tioa::StatePredicate count_below(const Automaton& a, int i, int value) {

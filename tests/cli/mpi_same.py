@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Distributed exploration (issue 18): under `mpirun -np N` every invariant and every
-deadlock / time-lock check of every built-in model (default instance, --por off, at most
+deadlock / time-lock check and legal-set closure of every built-in model (default instance, --por off, at most
 --max-states states) gives the same JSON result as one process: verdict, message, states, edges, depth, coverage and trace;
 only `seconds`, `threads` and `ranks` may differ, and `ranks` must be N. A property that
 does not run distributed yet must say so in one line on stderr with exit 2.
@@ -60,7 +60,7 @@ def main():
             if one.returncode == 2:
                 continue  # not a check of this instance (a usage error): nothing to compare
             mine = [p for p in properties(json.loads(one.stdout)) if p["name"] == prop["name"]]
-            if not mine or mine[0].get("kind") not in ("invariant", "deadlock"):
+            if not mine or mine[0].get("kind") not in ("invariant", "deadlock", "legal-set"):
                 continue
             if mine[0]["verdict"] == "incomplete" and "time limit" in mine[0]["message"]:
                 continue  # where a time limit stops is not deterministic

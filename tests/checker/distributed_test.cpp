@@ -1,0 +1,133 @@
+// The distributed checks (checker/distributed_checks.hpp, closure_scan.hpp) against one
+// process's, with the ranks as threads of this process (thread_ranks.hpp): the same
+// verdict, message, counts, depth, coverage and trace, for 1 to 4 ranks.
+
+#include <catch2/catch.hpp>
+
+#include "checker/checks.hpp"
+#include "models/fischer/fischer.hpp"
+#include "models/token_ring/token_ring.hpp"
+#include "tests/checker/helpers.hpp"
+#include "tests/checker/thread_ranks.hpp"
+
+using namespace checker;
+using namespace checker_test;
+
+namespace {
+
+// What a distributed run must give as one process does (not the seconds, threads, ranks).
+void require_same(const PropertyResult& one, const PropertyResult& other, int ranks) {
+  INFO(ranks << " ranks: " << one.message << " / " << other.message);
+  CHECK(other.ranks == static_cast<unsigned>(ranks));
+  CHECK(other.verdict == one.verdict);
+  CHECK(other.message == one.message);
+  CHECK(other.states == one.states);
+  CHECK(other.edges == one.edges);
+  CHECK(other.depth == one.depth);
+  CHECK(other.coverage.count == one.coverage.count);
+  CHECK(other.coverage.of == one.coverage.of);
+  REQUIRE(other.trace.has_value() == one.trace.has_value());
+  if (!one.trace)
+    return;
+  REQUIRE(other.trace->steps.size() == one.trace->steps.size());
+  for (std::size_t i = 0; i < one.trace->steps.size(); ++i) {
+    CHECK(other.trace->steps[i].action == one.trace->steps[i].action);
+    CHECK(other.trace->steps[i].time == one.trace->steps[i].time);
+    CHECK(other.trace->steps[i].state == one.trace->steps[i].state);
+  }
+}
+
+// Runs `check` on one process, then on 1 to 4 ranks, and compares every rank's result.
+PropertyResult same_on_every_rank_count(const std::function<PropertyResult()>& check) {
+  const PropertyResult one = check();
+  for (int ranks = 1; ranks <= 4; ++ranks)
+    for (const PropertyResult& r : ThreadRanks::run<PropertyResult>(ranks, check))
+      require_same(one, r, ranks);
+  return one;
+}
+
+// x in 0..2^18 - 1 counts up; L = every x but `hole`, so the step into the hole leaves L
+// from the member just before it, hundreds of thousands of valuations into the scan.
+tioa::Automaton counter_with_hole() {
+  tioa::Automaton a("counter");
+  const auto x = a.integer("x", 0, (1 << 18) - 1, 0);
+  a.internal("up")
+      .pre([=](const State& s, const Params&) { return s[x] < (1 << 18) - 1; })
+      .eff([=](State& s, const Params&) { s[x] = s[x] + 1; });
+  return a;
+}
+
+} // namespace
+
+TEST_CASE("distributed: the legal-set closure as one process scans it",
+          "[checker][distributed][legal_set]") {
+  const auto ring = token_ring::build(5, 4);
+  const StatePredicate one_privileged = [p = ring.privileges](const State& s) { return p(s) == 1; };
+  SECTION("holds") {
+    const PropertyResult r =
+        same_on_every_rank_count([&] { return check_legal_set(ring.system, one_privileged, {}); });
+    CHECK(r.verdict == Verdict::holds);
+  }
+  const tioa::Automaton counter = counter_with_hole();
+  const auto x = slot_of(counter, "x");
+  const StatePredicate legal = [=](const State& s) { return s.code(x) != 200000; };
+  SECTION("a step out of L, several rounds into the scan") {
+    const PropertyResult r =
+        same_on_every_rank_count([&] { return check_legal_set(counter, legal, {}); });
+    REQUIRE(r.verdict == Verdict::violated);
+    CHECK(r.states == 200000); // the members 0 .. 199,999
+    CHECK(value_of(counter, r.trace->steps[0].state, "x") == 199999);
+  }
+  SECTION("a state limit before the step out, and one after it") {
+    for (const std::uint64_t limit : {150000u, 199999u, 200000u, 65536u * 3}) {
+      ExploreOptions options;
+      options.limits.max_states = limit;
+      const PropertyResult r =
+          same_on_every_rank_count([&] { return check_legal_set(counter, legal, options); });
+      CHECK(r.verdict == (limit < 200000 ? Verdict::incomplete : Verdict::violated));
+    }
+  }
+  SECTION("an empty legal set") {
+    const PropertyResult r = same_on_every_rank_count(
+        [&] { return check_legal_set(ring.system, [](const State&) { return false; }, {}); });
+    CHECK(r.verdict == Verdict::violated);
+  }
+}
+
+TEST_CASE("distributed: invariants and deadlocks as one process finds them",
+          "[checker][distributed]") {
+  const auto good = fischer::build(3, 1, 2);
+  const auto bad = fischer::build(3, 2, 1); // the delay not above the bound: mutex fails
+  SECTION("an invariant that holds, and one broken") {
+    CHECK(same_on_every_rank_count([&] {
+            return check_invariant(good.system, good.at_most_one_in_cs, {});
+          }).verdict == Verdict::holds);
+    const PropertyResult r = same_on_every_rank_count(
+        [&] { return check_invariant(bad.system, bad.at_most_one_in_cs, {}); });
+    CHECK(r.verdict == Verdict::violated);
+  }
+  SECTION("a state limit inside a level") {
+    ExploreOptions options;
+    options.limits.max_states = 100;
+    options.por = false;
+    CHECK(same_on_every_rank_count([&] {
+            return check_invariant(good.system, good.at_most_one_in_cs, options);
+          }).verdict == Verdict::incomplete);
+  }
+  SECTION("deadlocks: none in Fischer, and the token ring's first stuck state") {
+    ExploreOptions options;
+    options.por = false;
+    CHECK(same_on_every_rank_count([&] {
+            return check_no_deadlock(good.system, options);
+          }).verdict == Verdict::holds);
+    tioa::Automaton stops("stops");
+    const auto y = stops.integer("y", 0, 5, 0);
+    stops.internal("inc")
+        .pre([=](const State& s, const Params&) { return s[y] < 5; })
+        .eff([=](State& s, const Params&) { s[y] = s[y] + 1; });
+    const PropertyResult r =
+        same_on_every_rank_count([&] { return check_no_deadlock(stops, options); });
+    CHECK(r.verdict == Verdict::violated);
+    CHECK(r.trace->length() == 5);
+  }
+}
