@@ -17,6 +17,7 @@ PropertyResult figures_of(const std::string& kind, const DistributedExploration&
   r.depth = ex.depth;
   r.seconds = ex.seconds;
   r.ranks = static_cast<unsigned>(ranks.size());
+  r.threads = ex.threads;
   r.por = por;
   r.time_unit = generator.timed() ? "quanta" : "steps";
   r.coverage = {Starts::all, ex.start_states, ex.start_states, "the start states", ""};

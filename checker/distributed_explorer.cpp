@@ -1,11 +1,16 @@
 #include "checker/distributed_explorer.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstring>
+#include <exception>
+#include <mutex>
 
 #include "checker/interrupt.hpp"
+#include "checker/mapped_memory.hpp"
 #include "checker/memory_budget.hpp"
+#include "checker/parallel_for.hpp"
 #include "checker/state_store.hpp"
 
 namespace checker {
@@ -20,60 +25,104 @@ std::uint64_t step_key(std::uint64_t from, std::uint32_t step) {
   return from << 32 | step;
 }
 constexpr std::uint32_t no_id = 0xffffffffu;
+constexpr std::uint64_t no_key = ~std::uint64_t{0};
 
-// Frontier states a rank expands before an exchange: bounds what a round sends.
+// Frontier states a thread of a rank expands before an exchange: bounds what a round sends.
 constexpr std::size_t round_states = 1 << 14;
 // Start states every rank enumerates between two looks at the limits.
 constexpr std::uint64_t start_round = 1 << 16;
+// Received states a thread hashes and prefetches before it inserts them.
+constexpr std::size_t insert_batch = 16;
 
-// One rank's states: its store, and for each state (by local id) its discovery key and its
-// id in the whole run (no_id until its level is numbered).
+// parallel_for for bodies that may throw (a model's error in a guard): the first exception
+// is thrown again once every thread has stopped.
+template <class Body> void on_threads(std::uint32_t threads, std::uint64_t n, Body&& body) {
+  std::exception_ptr error;
+  std::mutex first;
+  parallel_for(
+      threads, n,
+      [&](std::uint64_t begin, std::uint64_t end) {
+        try {
+          body(begin, end);
+        } catch (...) {
+          const std::lock_guard<std::mutex> lock(first);
+          if (!error)
+            error = std::current_exception();
+        }
+      },
+      1);
+  if (error)
+    std::rethrow_exception(error);
+}
+
+// One rank's states. Local ids are dense and in the order of insertion, so a level's new
+// states are the local ids from `level_begin` on. Per state, 12 bytes beside the store:
+// its id in the whole run, the id of its parent (no_id for a start state), and `by_id`,
+// the local ids in order of id (ids increase along it) for the trace. The level being
+// built also has each new state's smallest discovery key so far.
 struct RankStates {
-  explicit RankStates(std::uint32_t words) : store(words) {}
-  StateStore store;
-  std::vector<std::uint64_t> key;
-  std::vector<std::uint32_t> id;
-  std::vector<std::pair<std::uint32_t, StateId>> by_id; // (id, local id), ids increasing
-
-  // Inserts a state found with `k`; a state of the level being built keeps its smallest
-  // key. Returns its local id when it is new.
-  std::optional<StateId> offer(const Word* state, std::uint64_t k) {
-    const auto [local, fresh] = store.insert(state, hash_state(state, store.words()));
-    if (fresh) {
-      key.push_back(k);
-      id.push_back(no_id);
-      return local;
-    }
-    if (id[local] == no_id)
-      key[local] = std::min(key[local], k);
-    return std::nullopt;
+  RankStates(std::uint32_t words, std::uint32_t threads) : store(words), inserters(threads) {
+    store.set_inserters(threads, 1); // blocks of one id: no holes
   }
+  StateStore store;
+  std::uint32_t inserters;
+  MappedVector<std::uint32_t> id, parent; // (never held twice as they grow)
+  MappedVector<StateId> by_id;
+  StateId level_begin = 0;
+  std::vector<std::uint64_t> level_key; // [local - level_begin]
+
+  // Room to insert `more` states, from any number of threads at once.
+  void reserve(std::uint64_t more) {
+    // (find_or_insert leaves a slack of one id per inserter below id_limit())
+    if (store.size() + more + inserters > store.id_limit())
+      store.make_room(more);
+    level_key.resize(store.size() + more - level_begin, no_key);
+  }
+  // Inserts a state found with `k` (room reserved); a state of the level being built keeps
+  // its smallest key. Thread-safe.
+  void offer(const Word* state, std::uint64_t hash, std::uint64_t k, StateStore::IdBlock& ids) {
+    const auto claim = store.find_or_insert(state, hash, ids, [](StateId, std::uint32_t) {});
+    if (claim.kind == StateStore::Claim::Kind::full)
+      throw std::logic_error("distributed explorer: no room reserved in the store");
+    if (claim.id < level_begin)
+      return; // a state of an earlier level
+    std::atomic_ref<std::uint64_t> key(level_key[claim.id - level_begin]);
+    std::uint64_t now = key.load(std::memory_order_relaxed);
+    while (k < now && !key.compare_exchange_weak(now, k, std::memory_order_relaxed)) {
+    }
+  }
+  // The level's new states are all inserted: drop the keys reserved for none.
+  void close_level() { level_key.resize(store.size() - level_begin); }
 };
 
-// Numbers the level's new states (local ids `fresh`) as one process would: by their keys
-// among every rank's; `first` is the id of the level's first state. Returns the level's
-// size over all ranks and leaves `fresh` in id order.
-std::uint64_t number_level(RankStates& rs, std::vector<StateId>& fresh, std::uint64_t first,
-                           Collective& ranks) {
-  std::sort(fresh.begin(), fresh.end(),
-            [&](StateId a, StateId b) { return rs.key[a] < rs.key[b]; });
+// Numbers the level's new states as one process would: by their keys among every rank's;
+// `first` is the id of the level's first state. Returns the level's size over all ranks and
+// starts the next level.
+std::uint64_t number_level(RankStates& rs, std::uint64_t first, Collective& ranks) {
+  rs.close_level();
+  const auto count = static_cast<StateId>(rs.level_key.size());
+  std::vector<StateId> order(count); // the level's states by key (offsets from level_begin)
+  for (StateId i = 0; i < count; ++i)
+    order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](StateId a, StateId b) { return rs.level_key[a] < rs.level_key[b]; });
   std::vector<std::uint8_t> mine;
-  mine.reserve(fresh.size() * 8);
-  for (StateId s : fresh)
-    append_bytes(mine, &rs.key[s], 8);
+  mine.reserve(std::size_t{count} * 8);
+  for (StateId i : order)
+    append_bytes(mine, &rs.level_key[i], 8);
   std::vector<std::uint64_t> sizes;
   const std::vector<std::uint8_t> all = ranks.all_gather(mine, sizes);
   std::uint64_t total = 0;
   for (std::uint64_t bytes : sizes)
     total += bytes / 8;
   // Each of my keys' place: how many keys of every rank are smaller (keys are unique).
-  std::vector<std::uint64_t> place(fresh.size(), 0);
+  std::vector<std::uint64_t> place(count, 0);
   std::size_t at = 0;
   for (std::uint64_t bytes : sizes) {
     const std::size_t n = bytes / 8;
     std::size_t j = 0;
-    for (std::size_t i = 0; i < fresh.size(); ++i) {
-      const std::uint64_t k = rs.key[fresh[i]];
+    for (StateId i = 0; i < count; ++i) {
+      const std::uint64_t k = rs.level_key[order[i]];
       while (j < n) {
         std::uint64_t other;
         std::memcpy(&other, all.data() + at + j * 8, 8);
@@ -85,23 +134,37 @@ std::uint64_t number_level(RankStates& rs, std::vector<StateId>& fresh, std::uin
     }
     at += bytes;
   }
-  for (std::size_t i = 0; i < fresh.size(); ++i) {
-    const auto id = static_cast<std::uint32_t>(first + place[i]);
-    rs.id[fresh[i]] = id;
-    rs.by_id.emplace_back(id, fresh[i]);
+  rs.id.resize(rs.level_begin + std::size_t{count});
+  rs.parent.resize(rs.id.size());
+  for (StateId i = 0; i < count; ++i) {
+    const StateId local = rs.level_begin + order[i];
+    const std::uint64_t k = rs.level_key[order[i]];
+    rs.id[local] = static_cast<std::uint32_t>(first + place[i]);
+    rs.parent[local] = k & start_key_bit ? no_id : static_cast<std::uint32_t>(k >> 32);
+    rs.by_id.push_back(local);
   }
+  rs.level_begin += count;
+  rs.level_key.clear();
   return total;
 }
 
-// The smallest id among `fresh` whose state is a target, over all ranks (no_id: none).
-std::uint64_t first_target(const RankStates& rs, const std::vector<StateId>& fresh,
-                           const tioa::StatePredicate& target, Collective& ranks) {
-  std::uint64_t found = no_id;
+// The smallest id among the states [begin, end) that is a target, over all ranks (no_id:
+// none).
+std::uint64_t first_target(const RankStates& rs, StateId begin, StateId end,
+                           const tioa::StatePredicate& target, std::uint32_t threads,
+                           Collective& ranks) {
+  std::atomic<std::uint64_t> found{no_id};
   if (target)
-    for (StateId s : fresh)
-      if (rs.id[s] < found && target(tioa::State(rs.store.state(s), 0)))
-        found = rs.id[s];
-  return ranks.min(found);
+    on_threads(threads, end - begin, [&](std::uint64_t from, std::uint64_t to) {
+      std::uint64_t mine = no_id;
+      for (std::uint64_t i = begin + from; i < begin + to; ++i)
+        if (rs.id[i] < mine && target(tioa::State(rs.store.state(static_cast<StateId>(i)), 0)))
+          mine = rs.id[i];
+      std::uint64_t now = found.load();
+      while (mine < now && !found.compare_exchange_weak(now, mine)) {
+      }
+    });
+  return ranks.min(found.load());
 }
 
 // The states from a start state to `id`, asking the owner of each in turn.
@@ -110,29 +173,37 @@ std::vector<std::vector<Word>> path_to(const RankStates& rs, std::uint64_t id, C
   std::vector<std::vector<Word>> path;
   for (;;) {
     std::vector<std::uint8_t> mine;
-    const auto it = std::lower_bound(rs.by_id.begin(), rs.by_id.end(),
-                                     std::make_pair(static_cast<std::uint32_t>(id), StateId{0}));
-    if (it != rs.by_id.end() && it->first == id) {
-      append_bytes(mine, rs.store.state(it->second), words * sizeof(Word));
-      append_bytes(mine, &rs.key[it->second], 8);
+    const auto it = std::lower_bound(
+        rs.by_id.begin(), rs.by_id.end(), id,
+        [&](StateId local, std::uint64_t wanted) { return rs.id[local] < wanted; });
+    if (it != rs.by_id.end() && rs.id[*it] == id) {
+      append_bytes(mine, rs.store.state(*it), words * sizeof(Word));
+      append_bytes(mine, &rs.parent[*it], 4);
     }
     std::vector<std::uint64_t> sizes;
     const std::vector<std::uint8_t> all = ranks.all_gather(mine, sizes);
-    if (all.size() != words * sizeof(Word) + 8)
+    if (all.size() != words * sizeof(Word) + 4)
       throw std::logic_error("distributed trace: state " + std::to_string(id) + " has " +
                              std::to_string(all.size()) + " bytes of owners");
     std::vector<Word> state(words);
     std::memcpy(state.data(), all.data(), words * sizeof(Word));
-    std::uint64_t k;
-    std::memcpy(&k, all.data() + words * sizeof(Word), 8);
+    std::uint32_t parent;
+    std::memcpy(&parent, all.data() + words * sizeof(Word), 4);
     path.push_back(std::move(state));
-    if (k & start_key_bit)
+    if (parent == no_id)
       break;
-    id = k >> 32;
+    id = parent;
   }
   std::reverse(path.begin(), path.end());
   return path;
 }
+
+// What a thread of a rank gathers while it expands its part of a round.
+struct ExpandPart {
+  std::vector<std::vector<std::uint8_t>> to; // per owner: successors and their keys
+  std::vector<Word> scratch;
+  std::uint64_t edges = 0, ended = 0, stuck = 0, first_stuck = no_id;
+};
 
 } // namespace
 
@@ -155,15 +226,17 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
   };
   const Limits& limits = options.limits;
   const std::uint32_t words = generator.words();
+  const std::uint32_t threads = std::max(1u, options.threads);
   const int me = ranks.rank(), size = ranks.size();
   DistributedExploration out;
+  out.threads = threads;
   // What the property's budget has left (options.hpp): nothing left, nothing explored.
   const std::uint64_t max_states = limits.states_left();
   if (limits.states_exhausted()) {
     out.stop = StopReason::state_limit;
     return out;
   }
-  RankStates rs(words);
+  RankStates rs(words, threads);
   std::size_t peak = 0;
 
   // Between rounds: any rank out of time or memory, or asked to stop, stops every rank.
@@ -189,11 +262,12 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
     }
   };
 
-  // After a level is numbered: its first target, or the state limit. A sequential search
-  // keeps the first max_states states (ids below it) and goes on with the level for the
-  // counts (expansion.hpp), so only a target among those counts.
-  auto level_done = [&](const std::vector<StateId>& fresh) -> std::optional<StopReason> {
-    const std::uint64_t found = first_target(rs, fresh, target, ranks);
+  // After a level is numbered (the local ids [begin, end)): its first target, or the state
+  // limit. A sequential search keeps the first max_states states (ids below it) and goes on
+  // with the level for the counts (expansion.hpp), so only a target among those counts.
+  // Ids are 32 bits (as in one process's store): a run with more states stops there.
+  auto level_done = [&](StateId begin, StateId end) -> std::optional<StopReason> {
+    const std::uint64_t found = first_target(rs, begin, end, target, threads, ranks);
     if (found != no_id && (!max_states || found < max_states)) {
       out.found = found;
       return StopReason::found;
@@ -202,6 +276,8 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
       out.states = max_states;
       return StopReason::state_limit;
     }
+    if (out.states >= StateStore::max_states)
+      return StopReason::state_limit;
     return std::nullopt;
   };
 
@@ -210,14 +286,14 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
   // target, the state limit or a time or memory limit, as one process stops inserting them
   // (start_insertion.hpp): the states enumerated so far are there, so the ids are right.
   struct StopEnumeration {};
-  std::vector<StateId> fresh;
   std::optional<StopReason> stop;
   {
     std::vector<Word> buffer(words + 1, 0);
     std::uint64_t index = 0, targets = 0;
+    StateStore::IdBlock ids;
     auto enough = [&]() -> bool {
       const bool found = ranks.max(targets) > 0;
-      if (!found && max_states && ranks.sum(fresh.size()) > max_states)
+      if (!found && max_states && ranks.sum(rs.store.size()) > max_states)
         return true;
       if (!found)
         stop = stop_now();
@@ -226,12 +302,14 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
     try {
       start.enumerate(buffer.data(), 0, [&] {
         const std::uint64_t i = index++;
-        if (owner_of(hash_state(buffer.data(), words), size) == me)
-          if (const auto local = rs.offer(buffer.data(), start_key_bit | i)) {
-            fresh.push_back(*local);
-            if (target && target(tioa::State(buffer.data(), 0)))
-              ++targets;
-          }
+        const std::uint64_t hash = hash_state(buffer.data(), words);
+        if (owner_of(hash, size) == me) {
+          const std::uint64_t before = rs.store.size();
+          rs.reserve(1);
+          rs.offer(buffer.data(), hash, start_key_bit | i, ids);
+          if (rs.store.size() > before && target && target(tioa::State(buffer.data(), 0)))
+            ++targets;
+        }
         if (index % start_round == 0 && enough())
           throw StopEnumeration{};
       });
@@ -239,74 +317,111 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
     }
   }
   std::uint64_t level_first = 0;
-  std::uint64_t level_size = stop ? 0 : number_level(rs, fresh, level_first, ranks);
+  std::uint64_t level_size = stop ? 0 : number_level(rs, level_first, ranks);
   out.states = out.start_states = level_size;
   if (!stop)
-    stop = level_done(fresh);
+    stop = level_done(0, rs.level_begin);
   if (!stop)
     stop = stop_now();
 
-  std::vector<std::uint8_t> send, received;
-  std::vector<std::vector<std::uint8_t>> to(static_cast<std::size_t>(size));
-  std::vector<std::uint64_t> offsets(static_cast<std::size_t>(size) + 1);
-  std::vector<Word> scratch(words + 1, 0);
-  std::uint64_t first_stuck = no_id;
   const std::size_t record = words * sizeof(Word) + 8;
+  std::vector<ExpandPart> parts(threads);
+  for (ExpandPart& part : parts) {
+    part.to.resize(static_cast<std::size_t>(size));
+    part.scratch.assign(words + 1, 0);
+  }
+  std::vector<std::uint8_t> send;
+  std::vector<std::uint64_t> offsets(static_cast<std::size_t>(size) + 1);
+  std::vector<StateStore::IdBlock> id_blocks(threads);
+  StateId frontier_begin = 0;
   while (level_size > 0 && !stop) {
-    std::vector<StateId> frontier;
-    frontier.swap(fresh);
-    const std::uint64_t rounds = ranks.max((frontier.size() + round_states - 1) / round_states);
+    const StateId frontier_end = rs.level_begin; // the level just numbered
+    const std::uint64_t frontier = frontier_end - frontier_begin;
+    const std::uint64_t per_round = round_states * threads;
+    const std::uint64_t rounds = ranks.max((frontier + per_round - 1) / per_round);
     for (std::uint64_t round = 0; round < rounds && !stop; ++round) {
-      for (auto& t : to)
-        t.clear();
-      const std::size_t begin = std::min(frontier.size(), round * round_states);
-      const std::size_t end = std::min(frontier.size(), begin + round_states);
-      for (std::size_t f = begin; f < end; ++f) {
-        const StateId s = frontier[f];
-        const std::uint64_t from = rs.id[s];
-        std::uint32_t step = 0;
-        const std::size_t n = generator.successors(
-            rs.store.state(s), scratch.data(), [&](const Word* succ, const tioa::StepLabel&) {
-              const std::uint64_t k = step_key(from, step++);
-              auto& t = to[static_cast<std::size_t>(owner_of(hash_state(succ, words), size))];
-              append_bytes(t, succ, words * sizeof(Word));
-              append_bytes(t, &k, 8);
-            });
-        out.edges += n;
-        if (n > 0)
-          continue;
-        if (ended && ended(tioa::State(rs.store.state(s), 0))) {
-          ++out.ended;
-        } else {
-          ++out.stuck;
-          first_stuck = std::min<std::uint64_t>(first_stuck, from);
+      const std::uint64_t begin = std::min(frontier, round * per_round);
+      const std::uint64_t end = std::min(frontier, begin + per_round);
+      // Expand: each thread its part of the round, into its own messages.
+      for (ExpandPart& part : parts)
+        for (auto& t : part.to)
+          t.clear();
+      std::atomic<std::uint32_t> next_part{0};
+      on_threads(threads, end - begin, [&](std::uint64_t from, std::uint64_t to) {
+        ExpandPart& part = parts[next_part.fetch_add(1)];
+        for (std::uint64_t f = begin + from; f < begin + to; ++f) {
+          const auto s = static_cast<StateId>(frontier_begin + f);
+          const std::uint64_t id = rs.id[s];
+          std::uint32_t step = 0;
+          const std::size_t n = generator.successors(
+              rs.store.state(s), part.scratch.data(),
+              [&](const Word* succ, const tioa::StepLabel&) {
+                const std::uint64_t k = step_key(id, step++);
+                auto& t =
+                    part.to[static_cast<std::size_t>(owner_of(hash_state(succ, words), size))];
+                append_bytes(t, succ, words * sizeof(Word));
+                append_bytes(t, &k, 8);
+              });
+          part.edges += n;
+          if (n > 0)
+            continue;
+          if (ended && ended(tioa::State(rs.store.state(s), 0))) {
+            ++part.ended;
+          } else {
+            ++part.stuck;
+            part.first_stuck = std::min(part.first_stuck, id);
+          }
         }
-      }
+      });
+      // Exchange.
       send.clear();
       for (int r = 0; r < size; ++r) {
         offsets[static_cast<std::size_t>(r)] = send.size();
-        send.insert(send.end(), to[static_cast<std::size_t>(r)].begin(),
-                    to[static_cast<std::size_t>(r)].end());
+        for (const ExpandPart& part : parts)
+          send.insert(send.end(), part.to[static_cast<std::size_t>(r)].begin(),
+                      part.to[static_cast<std::size_t>(r)].end());
       }
       offsets[static_cast<std::size_t>(size)] = send.size();
-      received = ranks.all_to_all(send, offsets);
-      std::vector<Word> state(words);
-      for (std::size_t at = 0; at + record <= received.size(); at += record) {
-        std::memcpy(state.data(), received.data() + at, words * sizeof(Word));
-        std::uint64_t k;
-        std::memcpy(&k, received.data() + at + words * sizeof(Word), 8);
-        if (const auto local = rs.offer(state.data(), k))
-          fresh.push_back(*local);
-      }
+      const std::vector<std::uint8_t> received = ranks.all_to_all(send, offsets);
+      // Insert what this rank owns, on every thread.
+      const std::size_t count = received.size() / record;
+      rs.reserve(count);
+      std::atomic<std::uint32_t> next_block{0};
+      on_threads(threads, count, [&](std::uint64_t from, std::uint64_t to) {
+        StateStore::IdBlock& ids = id_blocks[next_block.fetch_add(1)];
+        std::uint64_t hashes[insert_batch];
+        for (std::uint64_t at = from; at < to; at += insert_batch) {
+          const std::uint64_t n = std::min<std::uint64_t>(insert_batch, to - at);
+          for (std::uint64_t i = 0; i < n; ++i) {
+            const auto* state = reinterpret_cast<const Word*>(received.data() + (at + i) * record);
+            hashes[i] = hash_state(state, words);
+            rs.store.prefetch(hashes[i]);
+          }
+          for (std::uint64_t i = 0; i < n; ++i) {
+            const std::uint8_t* r = received.data() + (at + i) * record;
+            std::uint64_t k;
+            std::memcpy(&k, r + words * sizeof(Word), 8);
+            rs.offer(reinterpret_cast<const Word*>(r), hashes[i], k, ids);
+          }
+        }
+      });
       stop = stop_now();
     }
     if (stop) // a level cut short: its states are not all found
       break;
+    frontier_begin = frontier_end;
     level_first += level_size;
-    level_size = number_level(rs, fresh, level_first, ranks);
+    level_size = number_level(rs, level_first, ranks);
     out.states += level_size;
     ++out.depth;
-    stop = level_done(fresh);
+    stop = level_done(frontier_end, rs.level_begin);
+  }
+  std::uint64_t first_stuck = no_id;
+  for (const ExpandPart& part : parts) {
+    out.edges += part.edges;
+    out.ended += part.ended;
+    out.stuck += part.stuck;
+    first_stuck = std::min(first_stuck, part.first_stuck);
   }
   out.edges = ranks.sum(out.edges);
   out.ended = ranks.sum(out.ended);

@@ -13,9 +13,14 @@
 // found (smallest id), the depth and the trace (rebuilt across ranks by asking the owner
 // of each parent in turn) are those of one process.
 //
-// Not yet: threads within a rank, the fingerprint store, the partial-order reduction,
-// recorded edges, stuck states (deadlock), and the checks built on them; the state limit
-// is checked between levels (a run may pass it by up to one level, and says so).
+// Within a rank, options.threads threads expand the round's frontier states (each into its
+// own messages) and insert what the rank receives (the store's concurrent insertion, each
+// new state's key kept with an atomic minimum); the ids do not depend on who inserts first.
+// A rank holds per state, beside its store, 12 bytes (the state's id, its parent's id and
+// its place in id order) and, while a level is built, 8 bytes of key per new state.
+//
+// Not yet: the fingerprint store, the partial-order reduction, recorded edges, and the
+// checks built on them.
 
 #include <optional>
 #include <vector>
@@ -42,6 +47,7 @@ struct DistributedExploration {
   std::optional<std::uint64_t> first_stuck;
   std::vector<std::vector<Word>> to_first_stuck;
   double seconds = 0;
+  std::uint32_t threads = 1;       // threads in each rank
   std::size_t peak_rank_bytes = 0; // the largest resident memory of a rank
   bool complete() const { return stop == StopReason::finished || stop == StopReason::found; }
 };

@@ -116,6 +116,13 @@ public:
     grow(1);
     array_[size_++] = value;
   }
+  // n elements: the first size() kept; the others hold what the memory held (zero where
+  // never written).
+  void resize(std::size_t n) {
+    if (n > size_)
+      grow(n - size_);
+    size_ = n;
+  }
   // Keeps the first `n` elements (n <= size()).
   void truncate(std::size_t n) { size_ = std::min(size_, n); }
   void clear() { size_ = 0; }

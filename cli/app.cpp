@@ -154,7 +154,10 @@ void add_run_options(CLI::App* command, RunSettings& settings, Limits& limits, s
   command->add_option("--junit", settings.junit_path, "also write a JUnit XML report to FILE")
       ->type_name("FILE")
       ->check(non_empty_name);
-  command->add_option("-j,--threads", settings.threads, "worker threads (default: all cores)")
+  command
+      ->add_option(
+          "-j,--threads", settings.threads,
+          "worker threads (default: all cores; under mpirun, each rank its share of its machine's)")
       ->type_name("N")
       ->check(CLI::Range(1u, 4096u));
   command
@@ -218,7 +221,9 @@ int run_command(int argc, char** argv, const catalogue::Catalogue& models, const
   app.require_subcommand(0, 1);
 
   RunSettings settings;
-  settings.threads = std::max(1u, std::thread::hardware_concurrency());
+  // All cores; under mpirun, this rank's share of the machine's (mpi_run.hpp).
+  settings.threads = std::max(1u, std::thread::hardware_concurrency() /
+                                      static_cast<unsigned>(ranks_on_this_host()));
   ModelRequest request;
   Limits limits;
   std::string trace = "text";
@@ -303,7 +308,10 @@ int run_command(int argc, char** argv, const catalogue::Catalogue& models, const
       ->type_name("DIR")
       ->check(non_empty_name);
   sweep->add_flag("--json", settings.json, "print one JSON object on stdout");
-  sweep->add_option("-j,--threads", settings.threads, "worker threads (default: all cores)")
+  sweep
+      ->add_option(
+          "-j,--threads", settings.threads,
+          "worker threads (default: all cores; under mpirun, each rank its share of its machine's)")
       ->type_name("N")
       ->check(CLI::Range(1u, 4096u));
   sweep

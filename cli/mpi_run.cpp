@@ -24,6 +24,7 @@ namespace cli {
 namespace {
 
 bool secondary = false;
+int host_ranks = 1;     // the ranks on this machine
 std::string held_error; // a secondary rank's error line, printed only if it is its own
 
 #ifdef TIOA_WITH_MPI
@@ -96,17 +97,30 @@ public:
     MPI_Allgather(&my_size, 1, MPI_UINT64_T, sizes.data(), 1, MPI_UINT64_T, MPI_COMM_WORLD);
     for (std::size_t r = 0; r < n; ++r)
       offsets[r + 1] = offsets[r] + sizes[r];
-    if (offsets[n] > std::numeric_limits<int>::max())
-      throw std::runtime_error("a level of more than 2^28 new states does not fit one "
-                               "exchange of its keys (MPI counts are ints)");
-    std::vector<int> counts(n), displacements(n);
-    for (std::size_t r = 0; r < n; ++r) {
-      counts[r] = static_cast<int>(sizes[r]);
-      displacements[r] = static_cast<int>(offsets[r]);
-    }
     std::vector<std::uint8_t> out(offsets[n]);
-    MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_BYTE, out.data(), counts.data(),
-                   displacements.data(), MPI_BYTE, MPI_COMM_WORLD);
+    // Rounds of at most `piece` bytes of each rank, as all_to_all.
+    const std::uint64_t piece = std::uint64_t{std::numeric_limits<int>::max()} / n;
+    const std::uint64_t longest = *std::max_element(sizes.begin(), sizes.end());
+    std::vector<int> counts(n), displacements(n);
+    std::vector<std::uint8_t> round;
+    std::uint64_t done = 0;
+    do {
+      int at = 0;
+      for (std::size_t r = 0; r < n; ++r) {
+        counts[r] = static_cast<int>(std::min(sizes[r] > done ? sizes[r] - done : 0, piece));
+        displacements[r] = at;
+        at += counts[r];
+      }
+      round.resize(static_cast<std::size_t>(at));
+      const int mine_now = counts[static_cast<std::size_t>(rank_)];
+      MPI_Allgatherv(mine.data() + std::min<std::uint64_t>(done, mine.size()), mine_now, MPI_BYTE,
+                     round.data(), counts.data(), displacements.data(), MPI_BYTE, MPI_COMM_WORLD);
+      for (std::size_t r = 0; r < n; ++r)
+        if (counts[r] > 0)
+          std::memcpy(out.data() + offsets[r] + done, round.data() + displacements[r],
+                      static_cast<std::size_t>(counts[r]));
+      done += piece;
+    } while (done < longest);
     return out;
   }
 
@@ -141,6 +155,10 @@ int launched_ranks() {
   return 1;
 }
 
+int ranks_on_this_host() {
+  return host_ranks;
+}
+
 bool secondary_rank() {
   return secondary;
 }
@@ -153,11 +171,17 @@ MpiRun::MpiRun(int& argc, char**& argv) {
   if (launched_ranks() <= 1)
     return;
 #ifdef TIOA_WITH_MPI
-  MPI_Init(&argc, &argv);
+  // Threads of a rank explore; only the thread that called main calls MPI.
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
   initialised_ = true;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
   MPI_Comm_dup(MPI_COMM_WORLD, &finish_comm);
+  MPI_Comm host;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &host);
+  MPI_Comm_size(host, &host_ranks);
+  MPI_Comm_free(&host);
   secondary = rank_ > 0;
   if (secondary) // rank 0 writes the reports
     if (!std::freopen("/dev/null", "w", stdout))

@@ -41,6 +41,10 @@ bool secondary_rank();
 // its own).
 void hold_error(const std::string& line);
 
+// The ranks of this run on this machine (1 when not distributed): they share its cores, so
+// each rank's default number of threads is its share.
+int ranks_on_this_host();
+
 // The number of processes mpirun launched, from its environment (1 when not under mpirun).
 int launched_ranks();
 

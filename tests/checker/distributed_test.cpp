@@ -131,3 +131,29 @@ TEST_CASE("distributed: invariants and deadlocks as one process finds them",
     CHECK(r.trace->length() == 5);
   }
 }
+
+TEST_CASE("distributed: threads within each rank change nothing",
+          "[checker][distributed][threads]") {
+  const auto good = fischer::build(4, 1, 2);
+  const auto bad = fischer::build(4, 2, 1);
+  for (const unsigned threads : {2u, 3u}) {
+    ExploreOptions options;
+    options.por = false;
+    options.threads = threads;
+    INFO(threads << " threads");
+    CHECK(same_on_every_rank_count([&] {
+            return check_invariant(good.system, good.at_most_one_in_cs, options);
+          }).verdict == Verdict::holds);
+    CHECK(same_on_every_rank_count([&] {
+            return check_invariant(bad.system, bad.at_most_one_in_cs, options);
+          }).verdict == Verdict::violated);
+    CHECK(same_on_every_rank_count([&] {
+            return check_no_deadlock(good.system, options);
+          }).verdict == Verdict::holds);
+    ExploreOptions limited = options;
+    limited.limits.max_states = 500;
+    CHECK(same_on_every_rank_count([&] {
+            return check_invariant(good.system, good.at_most_one_in_cs, limited);
+          }).verdict == Verdict::incomplete);
+  }
+}

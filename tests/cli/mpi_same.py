@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
-"""Distributed exploration (issue 18): under `mpirun -np N` every invariant and every
-deadlock / time-lock check and legal-set closure of every built-in model (default instance, --por off, at most
---max-states states) gives the same JSON result as one process: verdict, message, states, edges, depth, coverage and trace;
-only `seconds`, `threads` and `ranks` may differ, and `ranks` must be N. A property that
-does not run distributed yet must say so in one line on stderr with exit 2.
+"""Distributed exploration (issue 18): under `mpirun -np N` every invariant, every
+deadlock / time-lock check and every legal-set closure of every built-in model (default
+instance, --por off, at most --max-states states) gives the same JSON result as one
+process: verdict, message, states, edges, depth, coverage and trace; only `seconds`,
+`threads` and `ranks` may differ, and `ranks` must be N. One process runs with one
+thread, each rank with two. A property that does not run distributed yet must say so in
+one line on stderr with exit 2.
 
 usage: mpi_same.py TIOA_CHECK [--ranks 2 --ranks 4] [--max-states N]
 Exit 77 (skipped) when mpirun is missing or tioa-check was built without MPI."""
@@ -23,6 +25,11 @@ def strip(x):
     if isinstance(x, list):
         return [strip(v) for v in x]
     return x
+
+
+def two_threads(command):
+    """The command with two threads in each rank (one process runs with one)."""
+    return [("2" if i > 0 and command[i - 1] == "-j" else c) for i, c in enumerate(command)]
 
 
 def properties(report):
@@ -66,8 +73,8 @@ def main():
                 continue  # where a time limit stops is not deterministic
             for n in ranks:
                 label = f"{model['name']} {prop['name']} -np {n}"
-                run = subprocess.run([mpirun, "-np", str(n), args.tioa] + command, env=env,
-                                     capture_output=True, text=True, timeout=300)
+                run = subprocess.run([mpirun, "-np", str(n), args.tioa] + two_threads(command),
+                                     env=env, capture_output=True, text=True, timeout=300)
                 if run.returncode == 2:
                     lines = [l for l in run.stderr.splitlines() if "error:" in l]
                     if len(lines) == 1 and "does not run distributed yet" in lines[0]:
@@ -103,8 +110,8 @@ def main():
             continue
         for n in ranks:
             label = f"explore {model['name']} --from arbitrary -np {n}"
-            run = subprocess.run([mpirun, "-np", str(n), args.tioa] + command, env=env,
-                                 capture_output=True, text=True, timeout=300)
+            run = subprocess.run([mpirun, "-np", str(n), args.tioa] + two_threads(command),
+                                 env=env, capture_output=True, text=True, timeout=300)
             lines = [l for l in run.stderr.splitlines() if "error:" in l]
             if run.returncode == 2 and len(lines) == 1 and "distributed yet" in lines[0]:
                 refused += 1
