@@ -38,6 +38,8 @@ void mark_cut_short(PropertyResult& r, const DistributedExploration& ex,
   r.verdict = Verdict::incomplete;
   r.message = std::string(describe(ex.stop)) + " after " + std::to_string(ex.states) +
               " states to depth " + std::to_string(ex.depth) + ": " + covered;
+  if (!ex.failure.empty())
+    r.notes.push_back(ex.failure);
 }
 
 } // namespace

@@ -6,12 +6,16 @@
 #include <cstring>
 #include <exception>
 #include <mutex>
+#include <new>
+#include <stdexcept>
+#include <string>
 
 #include "checker/interrupt.hpp"
 #include "checker/mapped_memory.hpp"
 #include "checker/memory_budget.hpp"
 #include "checker/parallel_for.hpp"
 #include "checker/state_store.hpp"
+#include "tioa/errors.hpp"
 
 namespace checker {
 
@@ -198,6 +202,34 @@ std::vector<std::vector<Word>> path_to(const RankStates& rs, std::uint64_t id, C
   return path;
 }
 
+// An error of this rank alone, caught where it happened, so that the rank goes on making
+// the collective calls and the others learn of it at the next look at the limits instead
+// of waiting for it forever.
+struct RankFailure {
+  enum Kind : std::uint8_t { none, memory, model, other } kind = none;
+  std::string what;
+
+  template <class Work> void guard(Work&& work) {
+    if (kind != none)
+      return; // nothing more from a rank that failed
+    try {
+      work();
+    } catch (const std::bad_alloc&) {
+      kind = memory;
+      what = "out of memory";
+    } catch (const std::length_error& e) { // the store is full
+      kind = memory;
+      what = e.what();
+    } catch (const tioa::ModelError& e) {
+      kind = model;
+      what = e.what();
+    } catch (const std::exception& e) {
+      kind = other;
+      what = e.what();
+    }
+  }
+};
+
 // What a thread of a rank gathers while it expands its part of a round.
 struct ExpandPart {
   std::vector<std::vector<std::uint8_t>> to; // per owner: successors and their keys
@@ -238,19 +270,52 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
   }
   RankStates rs(words, threads);
   std::size_t peak = 0;
+  RankFailure failure;
 
-  // Between rounds: any rank out of time or memory, or asked to stop, stops every rank.
+  // A rank failed (every rank calls this when one did): the first failing rank's error. Out
+  // of memory (or a full store), the run stops as at the memory limit, saying which rank;
+  // any other error is thrown on every rank, as one process throws it.
+  auto failed = [&]() -> StopReason {
+    std::vector<std::uint8_t> mine;
+    if (failure.kind != RankFailure::none) {
+      mine.push_back(failure.kind);
+      append_bytes(mine, failure.what.data(), failure.what.size());
+    }
+    std::vector<std::uint64_t> sizes;
+    const std::vector<std::uint8_t> all = ranks.all_gather(mine, sizes);
+    int rank = 0;
+    while (sizes[static_cast<std::size_t>(rank)] == 0)
+      ++rank;
+    const auto kind = static_cast<RankFailure::Kind>(all[0]);
+    const std::string what(all.begin() + 1,
+                           all.begin() +
+                               static_cast<std::ptrdiff_t>(sizes[static_cast<std::size_t>(rank)]));
+    const std::string where = "rank " + std::to_string(rank) + " of " + std::to_string(size);
+    if (kind == RankFailure::model)
+      throw tioa::ModelError(what);
+    if (kind == RankFailure::other)
+      throw std::runtime_error(what + " (" + where + ")");
+    out.failure = where + " stopped the run: " + what;
+    return StopReason::memory_limit;
+  };
+
+  // Between rounds: any rank out of time or memory, failed or asked to stop, stops every
+  // rank.
   auto stop_now = [&]() -> std::optional<StopReason> {
     const std::uint64_t resident = resident_bytes();
     peak = std::max<std::size_t>(peak, resident);
     std::uint64_t reason = 0;
-    if (interrupted())
+    if (failure.kind != RankFailure::none)
+      reason = 4;
+    else if (interrupted())
       reason = 3;
     else if (resident_over_limit(limits)) // (as one process counts it, per rank)
       reason = 2;
     else if (limits.out_of_time(elapsed()))
       reason = 1;
     switch (ranks.max(reason)) {
+    case 4:
+      return failed();
     case 3:
       return StopReason::interrupted;
     case 2:
@@ -292,6 +357,10 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
     std::uint64_t index = 0, targets = 0;
     StateStore::IdBlock ids;
     auto enough = [&]() -> bool {
+      if (ranks.max(failure.kind != RankFailure::none)) {
+        stop = failed();
+        return true;
+      }
       const bool found = ranks.max(targets) > 0;
       if (!found && max_states && ranks.sum(rs.store.size()) > max_states)
         return true;
@@ -303,18 +372,21 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
       start.enumerate(buffer.data(), 0, [&] {
         const std::uint64_t i = index++;
         const std::uint64_t hash = hash_state(buffer.data(), words);
-        if (owner_of(hash, size) == me) {
-          const std::uint64_t before = rs.store.size();
-          rs.reserve(1);
-          rs.offer(buffer.data(), hash, start_key_bit | i, ids);
-          if (rs.store.size() > before && target && target(tioa::State(buffer.data(), 0)))
-            ++targets;
-        }
+        if (owner_of(hash, size) == me)
+          failure.guard([&] {
+            const std::uint64_t before = rs.store.size();
+            rs.reserve(1);
+            rs.offer(buffer.data(), hash, start_key_bit | i, ids);
+            if (rs.store.size() > before && target && target(tioa::State(buffer.data(), 0)))
+              ++targets;
+          });
         if (index % start_round == 0 && enough())
           throw StopEnumeration{};
       });
     } catch (const StopEnumeration&) {
     }
+    if (!stop && ranks.max(failure.kind != RankFailure::none)) // in the last round
+      stop = failed();
   }
   std::uint64_t level_first = 0;
   std::uint64_t level_size = stop ? 0 : number_level(rs, level_first, ranks);
@@ -347,31 +419,33 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
         for (auto& t : part.to)
           t.clear();
       std::atomic<std::uint32_t> next_part{0};
-      on_threads(threads, end - begin, [&](std::uint64_t from, std::uint64_t to) {
-        ExpandPart& part = parts[next_part.fetch_add(1)];
-        for (std::uint64_t f = begin + from; f < begin + to; ++f) {
-          const auto s = static_cast<StateId>(frontier_begin + f);
-          const std::uint64_t id = rs.id[s];
-          std::uint32_t step = 0;
-          const std::size_t n = generator.successors(
-              rs.store.state(s), part.scratch.data(),
-              [&](const Word* succ, const tioa::StepLabel&) {
-                const std::uint64_t k = step_key(id, step++);
-                auto& t =
-                    part.to[static_cast<std::size_t>(owner_of(hash_state(succ, words), size))];
-                append_bytes(t, succ, words * sizeof(Word));
-                append_bytes(t, &k, 8);
-              });
-          part.edges += n;
-          if (n > 0)
-            continue;
-          if (ended && ended(tioa::State(rs.store.state(s), 0))) {
-            ++part.ended;
-          } else {
-            ++part.stuck;
-            part.first_stuck = std::min(part.first_stuck, id);
+      failure.guard([&] {
+        on_threads(threads, end - begin, [&](std::uint64_t from, std::uint64_t to) {
+          ExpandPart& part = parts[next_part.fetch_add(1)];
+          for (std::uint64_t f = begin + from; f < begin + to; ++f) {
+            const auto s = static_cast<StateId>(frontier_begin + f);
+            const std::uint64_t id = rs.id[s];
+            std::uint32_t step = 0;
+            const std::size_t n = generator.successors(
+                rs.store.state(s), part.scratch.data(),
+                [&](const Word* succ, const tioa::StepLabel&) {
+                  const std::uint64_t k = step_key(id, step++);
+                  auto& t =
+                      part.to[static_cast<std::size_t>(owner_of(hash_state(succ, words), size))];
+                  append_bytes(t, succ, words * sizeof(Word));
+                  append_bytes(t, &k, 8);
+                });
+            part.edges += n;
+            if (n > 0)
+              continue;
+            if (ended && ended(tioa::State(rs.store.state(s), 0))) {
+              ++part.ended;
+            } else {
+              ++part.stuck;
+              part.first_stuck = std::min(part.first_stuck, id);
+            }
           }
-        }
+        });
       });
       // Exchange.
       send.clear();
@@ -385,25 +459,28 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
       const std::vector<std::uint8_t> received = ranks.all_to_all(send, offsets);
       // Insert what this rank owns, on every thread.
       const std::size_t count = received.size() / record;
-      rs.reserve(count);
       std::atomic<std::uint32_t> next_block{0};
-      on_threads(threads, count, [&](std::uint64_t from, std::uint64_t to) {
-        StateStore::IdBlock& ids = id_blocks[next_block.fetch_add(1)];
-        std::uint64_t hashes[insert_batch];
-        for (std::uint64_t at = from; at < to; at += insert_batch) {
-          const std::uint64_t n = std::min<std::uint64_t>(insert_batch, to - at);
-          for (std::uint64_t i = 0; i < n; ++i) {
-            const auto* state = reinterpret_cast<const Word*>(received.data() + (at + i) * record);
-            hashes[i] = hash_state(state, words);
-            rs.store.prefetch(hashes[i]);
+      failure.guard([&] {
+        rs.reserve(count);
+        on_threads(threads, count, [&](std::uint64_t from, std::uint64_t to) {
+          StateStore::IdBlock& ids = id_blocks[next_block.fetch_add(1)];
+          std::uint64_t hashes[insert_batch];
+          for (std::uint64_t at = from; at < to; at += insert_batch) {
+            const std::uint64_t n = std::min<std::uint64_t>(insert_batch, to - at);
+            for (std::uint64_t i = 0; i < n; ++i) {
+              const auto* state =
+                  reinterpret_cast<const Word*>(received.data() + (at + i) * record);
+              hashes[i] = hash_state(state, words);
+              rs.store.prefetch(hashes[i]);
+            }
+            for (std::uint64_t i = 0; i < n; ++i) {
+              const std::uint8_t* r = received.data() + (at + i) * record;
+              std::uint64_t k;
+              std::memcpy(&k, r + words * sizeof(Word), 8);
+              rs.offer(reinterpret_cast<const Word*>(r), hashes[i], k, ids);
+            }
           }
-          for (std::uint64_t i = 0; i < n; ++i) {
-            const std::uint8_t* r = received.data() + (at + i) * record;
-            std::uint64_t k;
-            std::memcpy(&k, r + words * sizeof(Word), 8);
-            rs.offer(reinterpret_cast<const Word*>(r), hashes[i], k, ids);
-          }
-        }
+        });
       });
       stop = stop_now();
     }

@@ -23,6 +23,7 @@
 // checks built on them.
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "checker/collective.hpp"
@@ -47,7 +48,8 @@ struct DistributedExploration {
   std::optional<std::uint64_t> first_stuck;
   std::vector<std::vector<Word>> to_first_stuck;
   double seconds = 0;
-  std::uint32_t threads = 1;       // threads in each rank
+  std::uint32_t threads = 1; // threads in each rank
+  std::string failure; // a rank out of memory stopped the run (stop: memory_limit): which, why
   std::size_t peak_rank_bytes = 0; // the largest resident memory of a rank
   bool complete() const { return stop == StopReason::finished || stop == StopReason::found; }
 };

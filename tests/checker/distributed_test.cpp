@@ -157,3 +157,50 @@ TEST_CASE("distributed: threads within each rank change nothing",
           }).verdict == Verdict::incomplete);
   }
 }
+
+TEST_CASE("distributed: a rank that fails stops every rank, none waits for it",
+          "[checker][distributed][failure]") {
+  // x counts up from 0 in two ways; the step from x = 5 fails in one of them, on the rank
+  // that owns x = 5 only.
+  const auto counter = [](bool out_of_memory) {
+    tioa::Automaton a("fails");
+    const auto x = a.integer("x", 0, 9, 0);
+    a.internal("up")
+        .pre([=](const State& s, const Params&) { return s[x] < 9; })
+        .eff([=](State& s, const Params&) {
+          if (s[x] == 5) {
+            if (out_of_memory)
+              throw std::bad_alloc();
+            throw tioa::ModelError("x = 5 has no successor in this model");
+          }
+          s[x] = s[x] + 1;
+        });
+    return a;
+  };
+  const tioa::Automaton model_error = counter(false), memory = counter(true);
+  const StatePredicate anything = [](const State&) { return true; };
+  SECTION("a model's error: every rank throws it, as one process does") {
+    CHECK_THROWS_AS(check_invariant(model_error, anything, {}), tioa::ModelError);
+    for (int ranks = 1; ranks <= 4; ++ranks)
+      for (const std::string& what : ThreadRanks::run<std::string>(ranks, [&] {
+             try {
+               check_invariant(model_error, anything, {});
+               return std::string("no error");
+             } catch (const tioa::ModelError& e) {
+               return std::string(e.what());
+             }
+           }))
+        CHECK(what == "x = 5 has no successor in this model");
+  }
+  SECTION("out of memory on one rank: incomplete on every rank, saying which") {
+    for (int ranks = 1; ranks <= 4; ++ranks)
+      for (const PropertyResult& r : ThreadRanks::run<PropertyResult>(
+               ranks, [&] { return check_invariant(memory, anything, {}); })) {
+        CHECK(r.verdict == Verdict::incomplete);
+        CHECK(r.message.rfind("memory limit reached", 0) == 0);
+        REQUIRE(r.notes.size() == 1);
+        CHECK(r.notes[0].find("stopped the run: out of memory") != std::string::npos);
+        CHECK(r.notes[0].find(" of " + std::to_string(ranks)) != std::string::npos);
+      }
+  }
+}
