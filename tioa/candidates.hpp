@@ -31,6 +31,27 @@ void from(std::size_t i, std::size_t binding, const ActionSignature& sig, const 
     const std::int64_t first = std::max<std::int64_t>(range.lo, b.where_first);
     const std::int64_t last =
         std::min<std::int64_t>(range.hi, b.where_first + std::int64_t(b.where.size()) - 1);
+    if (b.run) { // the fields of the ids first..last at once (the same bits as one by one)
+      if (first > last)
+        return;
+      const std::uint32_t width = b.where.front().width;
+      const auto lo_bit = static_cast<std::uint32_t>((first - b.where_first) * width);
+      const auto bits = static_cast<std::uint32_t>((last - first + 1) * width); // < 64
+      const std::uint64_t x =
+          local.code(Slot::bits(b.run->offset + lo_bit, static_cast<std::uint8_t>(bits))) ^
+          (b.run_pattern >> lo_bit);
+      std::uint64_t nonzero = x; // a field of x is zero where the code is where_code
+      for (std::uint32_t k = 1; k < width; ++k)
+        nonzero |= x >> k;
+      std::uint64_t match = ~nonzero & (b.run_low >> lo_bit) & ((std::uint64_t{1} << bits) - 1);
+      while (match != 0) { // the admitted ids, in increasing order
+        const auto bit = static_cast<std::uint32_t>(__builtin_ctzll(match));
+        match &= match - 1;
+        p.values[i] = static_cast<std::int32_t>(first + bit / width);
+        from(i + 1, binding + 1, sig, t, s, p, visit);
+      }
+      return;
+    }
     for (std::int64_t v = first; v <= last; ++v)
       if (local.code(b.where[static_cast<std::size_t>(v - b.where_first)]) == b.where_code) {
         p.values[i] = static_cast<std::int32_t>(v);

@@ -50,6 +50,12 @@ struct Binding {
   std::int32_t where_first = 0; // the id of where[0]
   std::uint64_t where_code = 0; // the code the variable of an admitted id holds
   std::uint32_t base = 0;       // where the state of the automaton that wrote it begins
+  // (a filter whose variables lie one after the other, all as wide, in at most 63 bits, as
+  // an array of small variables declared together does) The run of bits they fill, and
+  // where_code in every field of it: the generator reads every id's field at once.
+  std::optional<Slot> run;
+  std::uint64_t run_pattern = 0;
+  std::uint64_t run_low = 0; // bit 0 of every field
 
   bool filter() const { return !value; }
   // (a one-point binder) Its value in this state.

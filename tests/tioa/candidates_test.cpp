@@ -1,6 +1,8 @@
 // Binders (automaton.hpp) and the parameter values the generator tries (candidates.hpp).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <string>
 #include <vector>
 
 #include "tioa/candidates.hpp"
@@ -181,4 +183,60 @@ TEST_CASE("a filter is refused for inputs, a twice-bound parameter and a value o
   CHECK_THROWS_WITH(out.where("p", level, 4), Catch::Contains("bound twice"));
   CHECK_THROWS_WITH(a.internal("none", {{"p", 1, 2}}).where("p", VariableArray<int>{}, 0),
                     Catch::Contains("empty array"));
+}
+
+TEST_CASE("a filter over an array of fields side by side reads them at once, admitting the "
+          "ids one by one would",
+          "[candidates]") {
+  std::uint64_t seed = 12345;
+  const auto next = [&] { // a small xorshift: the same states on every run
+    seed ^= seed << 13;
+    seed ^= seed >> 7;
+    seed ^= seed << 17;
+    return seed;
+  };
+  for (const int values : {2, 3, 4, 5, 16}) // fields of 1, 2, 2, 3 and 4 bits
+    for (const int count : {1, 5, 12, 21})
+      for (const int pad : {0, 7, 50})           // bits before the array: a run across two words
+        for (const bool apart : {false, true}) { // another array between its items
+          INFO(values << " values, " << count << " ids, " << pad << " bits before, "
+                      << (apart ? "apart" : "side by side"));
+          Automaton a("filtered");
+          for (int done = 0, k = 0; done < pad; ++k) { // variables of at most 20 bits
+            const int bits = std::min(20, pad - done);
+            a.integer("pad" + std::to_string(k), 0, (1 << bits) - 1, 0);
+            done += bits;
+          }
+          VariableArray<int> level;
+          if (apart) {
+            level.first = 2;
+            for (int i = 0; i < count; ++i) {
+              level.items.push_back(
+                  a.integer("level[" + std::to_string(i + 2) + "]", 0, values - 1, 0));
+              a.integer("other[" + std::to_string(i) + "]", 0, 1, 0);
+            }
+          } else {
+            level =
+                a.integers("level", ids(2, static_cast<std::size_t>(count) + 1), 0, values - 1, 0);
+          }
+          a.internal("go", {{"p", 3, count + 4}}) // from the array's second id, past its last
+              .where("p", level, values - 1);
+          const Binding& b = a.transitions()[0].bindings.front();
+          const int width = static_cast<int>(level.items.front().slot.width);
+          CHECK(b.run.has_value() == ((count == 1 || !apart) && count * width <= 63));
+          std::vector<Word> state(a.words() + 1, 0);
+          for (int round = 0; round < 50; ++round) {
+            for (Word& w : state)
+              w = next();
+            const State s(state.data(), 0);
+            std::vector<std::int32_t> expected, tried;
+            for (int id = 3; id <= count + 1; ++id)
+              if (s.code(level[static_cast<std::size_t>(id)].slot) ==
+                  static_cast<std::uint64_t>(values - 1))
+                expected.push_back(id);
+            for (const Params& p : candidates(a, state))
+              tried.push_back(p[0]);
+            CHECK(tried == expected);
+          }
+        }
 }
