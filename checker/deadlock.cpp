@@ -17,9 +17,9 @@ PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& 
   if (options.por)
     reduction.emplace(generator, tioa::StatePredicate{});
   if (Collective* ranks = distributed()) {
-    require_distributable(options, reduction ? &*reduction : nullptr);
+    require_distributable(options);
     return check_no_deadlock_distributed(generator, system.start(), ended, ended_name, options,
-                                         reduction.has_value(), *ranks);
+                                         reduction ? &*reduction : nullptr, *ranks);
   }
   const Exploration ex =
       explore(generator, system.start(), options, hooks(), reduction ? &*reduction : nullptr);

@@ -19,6 +19,7 @@ PropertyResult figures_of(const std::string& kind, const DistributedExploration&
   r.ranks = static_cast<unsigned>(ranks.size());
   r.threads = ex.threads;
   r.por = por;
+  r.reduced_states = ex.reduced_states;
   r.time_unit = generator.timed() ? "quanta" : "steps";
   r.coverage = {Starts::all, ex.start_states, ex.start_states, "the start states", ""};
   return r;
@@ -44,48 +45,46 @@ void mark_cut_short(PropertyResult& r, const DistributedExploration& ex,
 
 } // namespace
 
-void require_distributable(const ExploreOptions& options, const ZeroTimeReduction* reduction) {
+void require_distributable(const ExploreOptions& options) {
   if (options.store == StoreKind::fingerprint)
     throw NotDistributed("the fingerprint store does not run distributed yet: use the exact "
                          "store");
-  if (reduction && reduction->can_reduce())
-    throw NotDistributed("the partial-order reduction does not run distributed yet: use "
-                         "--por off");
 }
 
 PropertyResult check_invariant_distributed(const tioa::SuccessorGenerator& generator,
                                            const tioa::StartSet& start,
                                            const tioa::StatePredicate& invariant,
-                                           const ExploreOptions& options, bool por,
-                                           Collective& ranks) {
+                                           const ExploreOptions& options,
+                                           const ZeroTimeReduction* reduction, Collective& ranks) {
   const DistributedExploration ex = explore_distributed(
-      generator, start, options, [&](const tioa::State& s) { return !invariant(s); }, {}, ranks);
-  PropertyResult r = figures_of("invariant", ex, generator, por, ranks);
+      generator, start, options, [&](const tioa::State& s) { return !invariant(s); }, {}, reduction,
+      ranks);
+  PropertyResult r = figures_of("invariant", ex, generator, reduction != nullptr, ranks);
   if (ex.found) {
     r.verdict = Verdict::violated;
     r.trace = trace_through(generator, ex.to_found);
     r.trace_role = "counterexample";
     r.trace_kind = "invariant";
-    r.message = "a reachable state breaks the invariant; shortest trace: " +
+    r.message = std::string("a reachable state breaks the invariant; ") +
+                (ex.reduced_states > 0 ? "trace (of the reduced graph): " : "shortest trace: ") +
                 std::to_string(r.trace->length()) + " steps";
   } else if (!ex.complete()) {
     mark_cut_short(r, ex, "no violation in the states covered");
   } else {
     r.verdict = Verdict::holds;
-    r.message = "all " + std::to_string(r.states) + " reachable states satisfy it";
+    r.message = "all " + reachable_states(r.states, ex.reduced_states) + " satisfy it";
   }
   return r;
 }
 
-PropertyResult check_no_deadlock_distributed(const tioa::SuccessorGenerator& generator,
-                                             const tioa::StartSet& start,
-                                             const tioa::StatePredicate& ended,
-                                             const std::string& ended_name,
-                                             const ExploreOptions& options, bool por,
-                                             Collective& ranks) {
+PropertyResult
+check_no_deadlock_distributed(const tioa::SuccessorGenerator& generator,
+                              const tioa::StartSet& start, const tioa::StatePredicate& ended,
+                              const std::string& ended_name, const ExploreOptions& options,
+                              const ZeroTimeReduction* reduction, Collective& ranks) {
   const DistributedExploration ex =
-      explore_distributed(generator, start, options, {}, ended, ranks);
-  PropertyResult r = figures_of("deadlock", ex, generator, por, ranks);
+      explore_distributed(generator, start, options, {}, ended, reduction, ranks);
+  PropertyResult r = figures_of("deadlock", ex, generator, reduction != nullptr, ranks);
   const char* what = generator.timed() ? "time-lock" : "deadlock";
   if (ex.ended > 0)
     r.notes.push_back(std::to_string(ex.ended) +
@@ -96,13 +95,13 @@ PropertyResult check_no_deadlock_distributed(const tioa::SuccessorGenerator& gen
     r.trace = trace_through(generator, ex.to_first_stuck);
     r.trace_role = "counterexample";
     r.trace_kind = what;
-    r.message = std::to_string(ex.stuck) + " reachable states with no action" +
+    r.message = reachable_states(ex.stuck, ex.reduced_states) + " with no action" +
                 (generator.timed() ? " and no tick" : "") + " (" + what + ")";
   } else if (!ex.complete()) {
     mark_cut_short(r, ex, std::string("no ") + what + " in the states covered");
   } else {
     r.verdict = Verdict::holds;
-    r.message = std::string("no ") + what + " in " + std::to_string(r.states) + " reachable states";
+    r.message = std::string("no ") + what + " in " + reachable_states(r.states, ex.reduced_states);
   }
   return r;
 }

@@ -13,22 +13,20 @@
 
 namespace checker {
 
-// Throws NotDistributed for what does not run distributed yet: the fingerprint store, and
-// a reduction that would act (`reduction`: the one the check would use, or null).
-void require_distributable(const ExploreOptions& options, const ZeroTimeReduction* reduction);
+// Throws NotDistributed for what does not run distributed yet: the fingerprint store.
+void require_distributable(const ExploreOptions& options);
 
-// `por`: the reduction was asked for (and, require_distributable passed, has nothing to
-// reduce): the report says so, as one process's does.
+// `reduction`: the partial-order reduction the check uses (null: none), as one process's.
 PropertyResult check_invariant_distributed(const tioa::SuccessorGenerator& generator,
                                            const tioa::StartSet& start,
                                            const tioa::StatePredicate& invariant,
-                                           const ExploreOptions& options, bool por,
-                                           Collective& ranks);
+                                           const ExploreOptions& options,
+                                           const ZeroTimeReduction* reduction, Collective& ranks);
 PropertyResult check_no_deadlock_distributed(const tioa::SuccessorGenerator& generator,
                                              const tioa::StartSet& start,
                                              const tioa::StatePredicate& ended,
                                              const std::string& ended_name,
-                                             const ExploreOptions& options, bool por,
-                                             Collective& ranks);
+                                             const ExploreOptions& options,
+                                             const ZeroTimeReduction* reduction, Collective& ranks);
 
 } // namespace checker

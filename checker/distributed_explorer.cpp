@@ -234,6 +234,7 @@ struct RankFailure {
 struct ExpandPart {
   std::vector<std::vector<std::uint8_t>> to; // per owner: successors and their keys
   std::vector<Word> scratch;
+  ZeroTimeReduction::Scratch reduction;
   std::uint64_t edges = 0, ended = 0, stuck = 0, first_stuck = no_id;
 };
 
@@ -251,7 +252,8 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
                                            const tioa::StartSet& start,
                                            const ExploreOptions& options,
                                            const tioa::StatePredicate& target,
-                                           const tioa::StatePredicate& ended, Collective& ranks) {
+                                           const tioa::StatePredicate& ended,
+                                           const ZeroTimeReduction* reduction, Collective& ranks) {
   const auto began = std::chrono::steady_clock::now();
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
@@ -426,15 +428,25 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
             const auto s = static_cast<StateId>(frontier_begin + f);
             const std::uint64_t id = rs.id[s];
             std::uint32_t step = 0;
-            const std::size_t n = generator.successors(
-                rs.store.state(s), part.scratch.data(),
-                [&](const Word* succ, const tioa::StepLabel&) {
-                  const std::uint64_t k = step_key(id, step++);
-                  auto& t =
-                      part.to[static_cast<std::size_t>(owner_of(hash_state(succ, words), size))];
-                  append_bytes(t, succ, words * sizeof(Word));
-                  append_bytes(t, &k, 8);
-                });
+            const auto send = [&](const Word* succ) {
+              const std::uint64_t k = step_key(id, step++);
+              auto& t = part.to[static_cast<std::size_t>(owner_of(hash_state(succ, words), size))];
+              append_bytes(t, succ, words * sizeof(Word));
+              append_bytes(t, &k, 8);
+            };
+            // As one process expands it (expansion.hpp): the reduction's successors, or all.
+            const std::optional<std::size_t> reduced =
+                reduction ? reduction->reduce(rs.store.state(s), part.reduction) : std::nullopt;
+            std::size_t n = 0;
+            if (reduced) {
+              n = *reduced;
+              for (std::size_t k = 0; k < n; ++k)
+                send(part.reduction.successors.data() + k * words);
+            } else {
+              n = generator.successors(
+                  rs.store.state(s), part.scratch.data(),
+                  [&](const Word* succ, const tioa::StepLabel&) { send(succ); });
+            }
             part.edges += n;
             if (n > 0)
               continue;
@@ -495,6 +507,7 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
   }
   std::uint64_t first_stuck = no_id;
   for (const ExpandPart& part : parts) {
+    out.reduced_states += part.reduction.reduced;
     out.edges += part.edges;
     out.ended += part.ended;
     out.stuck += part.stuck;
@@ -503,6 +516,7 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
   out.edges = ranks.sum(out.edges);
   out.ended = ranks.sum(out.ended);
   out.stuck = ranks.sum(out.stuck);
+  out.reduced_states = ranks.sum(out.reduced_states);
   if (const std::uint64_t first = ranks.min(first_stuck); first != no_id) {
     out.first_stuck = first;
     out.to_first_stuck = path_to(rs, first, ranks);

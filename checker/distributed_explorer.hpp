@@ -19,8 +19,11 @@
 // A rank holds per state, beside its store, 12 bytes (the state's id, its parent's id and
 // its place in id order) and, while a level is built, 8 bytes of key per new state.
 //
-// Not yet: the fingerprint store, the partial-order reduction, recorded edges, and the
-// checks built on them.
+// With a reduction (zero_time_reduction.hpp), a rank expands a state as one process does:
+// the reduction's choice depends on the state alone, so the reduced graph, its counts and
+// its ids are one process's too.
+//
+// Not yet: the fingerprint store, recorded edges, and the checks built on them.
 
 #include <optional>
 #include <string>
@@ -29,6 +32,7 @@
 #include "checker/collective.hpp"
 #include "checker/exploration.hpp"
 #include "checker/options.hpp"
+#include "checker/zero_time_reduction.hpp"
 #include "tioa/start_set.hpp"
 #include "tioa/successors.hpp"
 
@@ -38,6 +42,7 @@ struct DistributedExploration {
   std::uint64_t states = 0; // on every rank: the whole run's
   std::uint64_t start_states = 0;
   std::uint64_t edges = 0;
+  std::uint64_t reduced_states = 0; // expanded in part by the reduction
   std::uint32_t depth = 0;
   StopReason stop = StopReason::finished;
   std::optional<std::uint64_t> found;      // the id of the first target
@@ -56,12 +61,14 @@ struct DistributedExploration {
 
 // `target` (may be empty): the states to look for; the search stops at the level of the
 // first. `ended` (may be empty): the states with no successor that are proper ends.
+// `reduction` (may be null): the partial-order reduction to expand states with.
 // Every rank calls it with the same arguments and gets the same result.
 DistributedExploration explore_distributed(const tioa::SuccessorGenerator& generator,
                                            const tioa::StartSet& start,
                                            const ExploreOptions& options,
                                            const tioa::StatePredicate& target,
-                                           const tioa::StatePredicate& ended, Collective& ranks);
+                                           const tioa::StatePredicate& ended,
+                                           const ZeroTimeReduction* reduction, Collective& ranks);
 
 // The rank that owns a state of this hash (state_hash.hpp), among `ranks`: from a mix of
 // the hash of its own, so that the states of a rank still spread over its whole table.

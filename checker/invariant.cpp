@@ -13,9 +13,9 @@ PropertyResult check_invariant(const Automaton& system, const StatePredicate& in
   if (options.por)
     reduction.emplace(generator, invariant);
   if (Collective* ranks = distributed()) {
-    require_distributable(options, reduction ? &*reduction : nullptr);
+    require_distributable(options);
     return check_invariant_distributed(generator, system.start(), invariant, options,
-                                       reduction.has_value(), *ranks);
+                                       reduction ? &*reduction : nullptr, *ranks);
   }
   const Exploration ex =
       explore(generator, system.start(), options,

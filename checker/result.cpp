@@ -75,7 +75,11 @@ PropertyResult result_of(const std::string& kind, const Exploration& ex,
 }
 
 std::string reachable_states(std::uint64_t count, const Exploration& ex) {
-  if (ex.reduced_states > 0)
+  return reachable_states(count, ex.reduced_states);
+}
+
+std::string reachable_states(std::uint64_t count, std::uint64_t reduced_states) {
+  if (reduced_states > 0)
     return "the " + std::to_string(count) + " reachable states of the reduced graph";
   return std::to_string(count) + " reachable states";
 }

@@ -81,6 +81,8 @@ PropertyResult result_of(const std::string& kind, const Exploration& ex,
 // "N reachable states", or, when zero-time steps were reduced, "the N reachable states of
 // the reduced graph": a reduced search visits only some of the reachable states.
 std::string reachable_states(std::uint64_t count, const Exploration& ex);
+// The same from how many states the reduction expanded in part (0: none).
+std::string reachable_states(std::uint64_t count, std::uint64_t reduced_states);
 
 // "all, 4 of 4: the start states", "sampled, 1000 of 5120000: U(VLNodes) x R(env) (drawn
 // at random, seed 1)".

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "checker/checks.hpp"
+#include "tioa/compose.hpp"
 #include "models/fischer/fischer.hpp"
 #include "models/token_ring/token_ring.hpp"
 #include "tests/checker/helpers.hpp"
@@ -24,6 +25,8 @@ void require_same(const PropertyResult& one, const PropertyResult& other, int ra
   CHECK(other.states == one.states);
   CHECK(other.edges == one.edges);
   CHECK(other.depth == one.depth);
+  CHECK(other.por == one.por);
+  CHECK(other.reduced_states == one.reduced_states);
   CHECK(other.coverage.count == one.coverage.count);
   CHECK(other.coverage.of == one.coverage.of);
   REQUIRE(other.trace.has_value() == one.trace.has_value());
@@ -202,5 +205,41 @@ TEST_CASE("distributed: a rank that fails stops every rank, none waits for it",
         CHECK(r.notes[0].find("stopped the run: out of memory") != std::string::npos);
         CHECK(r.notes[0].find(" of " + std::to_string(ranks)) != std::string::npos);
       }
+  }
+}
+
+TEST_CASE("distributed: with the partial-order reduction, the reduced graph of one process",
+          "[checker][distributed][por]") {
+  // Workers that must each work once an instant, independently: the reduction takes one
+  // order of their steps where the full search takes every interleaving.
+  std::vector<tioa::Automaton> parts;
+  for (int i = 0; i < 4; ++i) {
+    tioa::Automaton a("w" + std::to_string(i));
+    const auto due = a.boolean("due", true);
+    const auto count = a.integer("count", 0, 3, 0);
+    a.internal("work" + std::to_string(i))
+        .pre([=](const State& s, const Params&) { return s[due]; })
+        .eff([=](State& s, const Params&) {
+          s[due] = false;
+          s[count] = std::min<int>(s[count] + 1, 3);
+        });
+    a.trajectories([=](State& s) { s[due] = true; }, [=](const State& s) { return s[due]; });
+    parts.push_back(a);
+  }
+  const tioa::Automaton workers = tioa::compose("workers", parts);
+  const tioa::Slot first_count = slot_of(workers, "w0.count");
+  const StatePredicate below_three = [=](const State& s) { return s.code(first_count) < 3; };
+  for (const unsigned threads : {1u, 2u}) {
+    ExploreOptions options = with_por(true);
+    options.threads = threads;
+    const PropertyResult holds = same_on_every_rank_count(
+        [&] { return check_no_deadlock(workers, options); });
+    CHECK(holds.verdict == Verdict::holds);
+    CHECK(holds.reduced_states > 0);
+    CHECK(holds.states < check_no_deadlock(workers, with_por(false)).states);
+    const PropertyResult broken = same_on_every_rank_count(
+        [&] { return check_invariant(workers, below_three, options); });
+    CHECK(broken.verdict == Verdict::violated);
+    CHECK(broken.reduced_states > 0);
   }
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Distributed exploration (issue 18): under `mpirun -np N` every invariant, every
 deadlock / time-lock check and every legal-set closure of every built-in model (default
-instance, --por off, at most --max-states states) gives the same JSON result as one
+instance, the partial-order reduction on where it acts, at most --max-states states) gives the same JSON result as one
 process: verdict, message, states, edges, depth, coverage and trace; only `seconds`,
 `threads` and `ranks` may differ, and `ranks` must be N. One process runs with one
 thread, each rank with two. A property that does not run distributed yet must say so in
@@ -59,9 +59,8 @@ def main():
     failures, compared, refused = [], 0, 0
     for model in models:
         for prop in model["properties"]:
-            command = ["check", model["name"], "--prop", prop["name"], "--json", "--por",
-                       "off", "-j", "1", "--max-states", str(args.max_states),
-                       "--max-seconds", "20"]
+            command = ["check", model["name"], "--prop", prop["name"], "--json", "-j", "1",
+                       "--max-states", str(args.max_states), "--max-seconds", "20"]
             one = subprocess.run([args.tioa] + command, capture_output=True, text=True,
                                  timeout=120)
             if one.returncode == 2:
@@ -100,8 +99,8 @@ def main():
                       f"{mine[0]['edges']} edges")
     # From every valuation (U(A)): a large start set, the limits met in level 0.
     for model in models:
-        command = ["explore", model["name"], "--from", "arbitrary", "--json", "--por", "off",
-                   "-j", "1", "--max-states", "20000", "--max-seconds", "20"]
+        command = ["explore", model["name"], "--from", "arbitrary", "--json", "-j", "1",
+                   "--max-states", "20000", "--max-seconds", "20"]
         one = subprocess.run([args.tioa] + command, capture_output=True, text=True, timeout=120)
         if one.returncode == 2:
             continue
