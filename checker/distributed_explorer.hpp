@@ -23,6 +23,12 @@
 // the reduction's choice depends on the state alone, so the reduced graph, its counts and
 // its ids are one process's too.
 //
+// A rank's error while it inserts start states, expands or inserts is caught there; the
+// rank goes on with the exchanges, and at the next look at the limits every rank learns
+// of it: out of memory (or a full store) stops them all as at the memory limit, with a
+// note naming the rank (`failure`); a model's error is thrown on every rank, as one
+// process throws it. No rank is left waiting for one that stopped.
+//
 // Not yet: the fingerprint store, recorded edges, and the checks built on them.
 
 #include <optional>
