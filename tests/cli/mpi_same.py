@@ -5,7 +5,8 @@ instance, the partial-order reduction on where it acts, at most --max-states sta
 process: verdict, message, states, edges, depth, coverage and trace; only `seconds`,
 `threads` and `ranks` may differ, and `ranks` must be N. One process runs with one
 thread, each rank with two. A property that does not run distributed yet must say so in
-one line on stderr with exit 2.
+one line on stderr with exit 2; in a suite (two models' entries), it is reported not run
+(incomplete) and the other entries are one process's.
 
 usage: mpi_same.py TIOA_CHECK [--ranks 2 --ranks 4] [--max-states N]
 Exit 77 (skipped) when mpirun is missing or tioa-check was built without MPI."""
@@ -126,6 +127,32 @@ def main():
             compared += 1
             print(f"same {label}: " + ", ".join(f"{p['name']} {p['verdict']} {p['states']}"
                                                  for p in mine))
+    # The suite of two models: every entry that runs distributed as one process runs it,
+    # every other one reported as not run (incomplete), and the suite goes on after it.
+    command = ["suite", "--model", "path-reservation", "--model", "token-ring", "--json", "-j",
+               "1"]
+    one = json.loads(subprocess.run([args.tioa] + command, capture_output=True, text=True,
+                                    timeout=300).stdout)["suite"]
+    for n in ranks:
+        run = subprocess.run([mpirun, "-np", str(n), args.tioa] + two_threads(command), env=env,
+                             capture_output=True, text=True, timeout=300)
+        theirs = json.loads(run.stdout)["suite"]
+        if len(theirs) != len(one):
+            failures.append(f"suite -np {n}: {len(theirs)} entries, one process {len(one)}")
+            continue
+        not_run = 0
+        for mine, other in zip(one, theirs):
+            label = f"suite -np {n}: {mine['model']} {mine['property']}"
+            if other["result"]["message"].startswith("not run: "):
+                not_run += 1
+                if other["result"]["verdict"] != "incomplete" or mine["result"].get("kind") in (
+                        "invariant", "deadlock", "legal-set"):
+                    failures.append(f"{label}: not run, or not incomplete")
+            elif strip(other["result"]) != strip(mine["result"]):
+                failures.append(f"{label}: differs")
+        compared += 1
+        print(f"same suite -np {n}: {len(one) - not_run} entries as one process, "
+              f"{not_run} not run")
     print(f"{compared} runs the same as one process, {refused} refused in one line")
     for f in failures:
         print("FAIL", f)
