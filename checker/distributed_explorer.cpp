@@ -152,11 +152,9 @@ std::uint64_t number_level(RankStates& rs, std::uint64_t first, Collective& rank
   return total;
 }
 
-// The smallest id among the states [begin, end) that is a target, over all ranks (no_id:
-// none).
+// The smallest id among this rank's states [begin, end) that is a target (no_id: none).
 std::uint64_t first_target(const RankStates& rs, StateId begin, StateId end,
-                           const tioa::StatePredicate& target, std::uint32_t threads,
-                           Collective& ranks) {
+                           const tioa::StatePredicate& target, std::uint32_t threads) {
   std::atomic<std::uint64_t> found{no_id};
   if (target)
     on_threads(threads, end - begin, [&](std::uint64_t from, std::uint64_t to) {
@@ -168,7 +166,7 @@ std::uint64_t first_target(const RankStates& rs, StateId begin, StateId end,
       while (mine < now && !found.compare_exchange_weak(now, mine)) {
       }
     });
-  return ranks.min(found.load());
+  return found.load();
 }
 
 // The states from a start state to `id`, asking the owner of each in turn.
@@ -334,7 +332,11 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
   // with the level for the counts (expansion.hpp), so only a target among those counts.
   // Ids are 32 bits (as in one process's store): a run with more states stops there.
   auto level_done = [&](StateId begin, StateId end) -> std::optional<StopReason> {
-    const std::uint64_t found = first_target(rs, begin, end, target, threads, ranks);
+    std::uint64_t mine = no_id;
+    failure.guard([&] { mine = first_target(rs, begin, end, target, threads); });
+    if (ranks.max(failure.kind != RankFailure::none)) // the predicate failed on a rank
+      return failed();
+    const std::uint64_t found = ranks.min(mine);
     if (found != no_id && (!max_states || found < max_states)) {
       out.found = found;
       return StopReason::found;

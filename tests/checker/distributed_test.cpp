@@ -5,11 +5,11 @@
 #include <catch2/catch.hpp>
 
 #include "checker/checks.hpp"
-#include "tioa/compose.hpp"
 #include "models/fischer/fischer.hpp"
 #include "models/token_ring/token_ring.hpp"
 #include "tests/checker/helpers.hpp"
 #include "tests/checker/thread_ranks.hpp"
+#include "tioa/compose.hpp"
 
 using namespace checker;
 using namespace checker_test;
@@ -195,6 +195,24 @@ TEST_CASE("distributed: a rank that fails stops every rank, none waits for it",
            }))
         CHECK(what == "x = 5 has no successor in this model");
   }
+  SECTION("the checked predicate's error, on the rank that owns the state") {
+    const tioa::Slot x = slot_of(memory, "x");
+    const StatePredicate throws = [=](const State& s) -> bool {
+      if (s.code(x) == 3)
+        throw tioa::ModelError("the predicate cannot read x = 3");
+      return true;
+    };
+    for (int ranks = 1; ranks <= 4; ++ranks)
+      for (const std::string& what : ThreadRanks::run<std::string>(ranks, [&] {
+             try {
+               check_invariant(model_error, throws, {});
+               return std::string("no error");
+             } catch (const tioa::ModelError& e) {
+               return std::string(e.what());
+             }
+           }))
+        CHECK(what == "the predicate cannot read x = 3");
+  }
   SECTION("out of memory on one rank: incomplete on every rank, saying which") {
     for (int ranks = 1; ranks <= 4; ++ranks)
       for (const PropertyResult& r : ThreadRanks::run<PropertyResult>(
@@ -232,13 +250,13 @@ TEST_CASE("distributed: with the partial-order reduction, the reduced graph of o
   for (const unsigned threads : {1u, 2u}) {
     ExploreOptions options = with_por(true);
     options.threads = threads;
-    const PropertyResult holds = same_on_every_rank_count(
-        [&] { return check_no_deadlock(workers, options); });
+    const PropertyResult holds =
+        same_on_every_rank_count([&] { return check_no_deadlock(workers, options); });
     CHECK(holds.verdict == Verdict::holds);
     CHECK(holds.reduced_states > 0);
     CHECK(holds.states < check_no_deadlock(workers, with_por(false)).states);
-    const PropertyResult broken = same_on_every_rank_count(
-        [&] { return check_invariant(workers, below_three, options); });
+    const PropertyResult broken =
+        same_on_every_rank_count([&] { return check_invariant(workers, below_three, options); });
     CHECK(broken.verdict == Verdict::violated);
     CHECK(broken.reduced_states > 0);
   }
