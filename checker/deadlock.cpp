@@ -17,7 +17,6 @@ PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& 
   if (options.por)
     reduction.emplace(generator, tioa::StatePredicate{});
   if (Collective* ranks = distributed()) {
-    require_distributable(options);
     return check_no_deadlock_distributed(generator, system.start(), ended, ended_name, options,
                                          reduction ? &*reduction : nullptr, *ranks);
   }

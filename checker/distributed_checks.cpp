@@ -1,6 +1,7 @@
 #include "checker/distributed_checks.hpp"
 
 #include "checker/distributed_explorer.hpp"
+#include "checker/fingerprint.hpp"
 #include "checker/trace.hpp"
 
 namespace checker {
@@ -20,6 +21,10 @@ PropertyResult figures_of(const std::string& kind, const DistributedExploration&
   r.threads = ex.threads;
   r.por = por;
   r.reduced_states = ex.reduced_states;
+  if (ex.fingerprints) {
+    r.store = "fingerprint";
+    r.omission_probability = omission_probability(ex.states);
+  }
   r.time_unit = generator.timed() ? "quanta" : "steps";
   r.coverage = {Starts::all, ex.start_states, ex.start_states, "the start states", ""};
   return r;
@@ -34,6 +39,18 @@ Trace trace_through(const tioa::SuccessorGenerator& generator,
   return trace;
 }
 
+// Holds, as mark_holds() says it: on the fingerprint store, up to hash collisions.
+void mark_holds(PropertyResult& r, const DistributedExploration& ex, const std::string& message) {
+  if (!ex.fingerprints) {
+    r.verdict = Verdict::holds;
+    r.message = message;
+    return;
+  }
+  r.verdict = Verdict::incomplete;
+  r.message = "holds up to hash collisions, omission probability ≤ " +
+              format_probability(omission_probability(ex.states)) + ": " + message;
+}
+
 void mark_cut_short(PropertyResult& r, const DistributedExploration& ex,
                     const std::string& covered) {
   r.verdict = Verdict::incomplete;
@@ -44,12 +61,6 @@ void mark_cut_short(PropertyResult& r, const DistributedExploration& ex,
 }
 
 } // namespace
-
-void require_distributable(const ExploreOptions& options) {
-  if (options.store == StoreKind::fingerprint)
-    throw NotDistributed("the fingerprint store does not run distributed yet: use the exact "
-                         "store");
-}
 
 PropertyResult check_invariant_distributed(const tioa::SuccessorGenerator& generator,
                                            const tioa::StartSet& start,
@@ -71,8 +82,7 @@ PropertyResult check_invariant_distributed(const tioa::SuccessorGenerator& gener
   } else if (!ex.complete()) {
     mark_cut_short(r, ex, "no violation in the states covered");
   } else {
-    r.verdict = Verdict::holds;
-    r.message = "all " + reachable_states(r.states, ex.reduced_states) + " satisfy it";
+    mark_holds(r, ex, "all " + reachable_states(r.states, ex.reduced_states) + " satisfy it");
   }
   return r;
 }
@@ -100,8 +110,8 @@ check_no_deadlock_distributed(const tioa::SuccessorGenerator& generator,
   } else if (!ex.complete()) {
     mark_cut_short(r, ex, std::string("no ") + what + " in the states covered");
   } else {
-    r.verdict = Verdict::holds;
-    r.message = std::string("no ") + what + " in " + reachable_states(r.states, ex.reduced_states);
+    mark_holds(r, ex,
+               std::string("no ") + what + " in " + reachable_states(r.states, ex.reduced_states));
   }
   return r;
 }

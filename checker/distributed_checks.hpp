@@ -13,9 +13,6 @@
 
 namespace checker {
 
-// Throws NotDistributed for what does not run distributed yet: the fingerprint store.
-void require_distributable(const ExploreOptions& options);
-
 // `reduction`: the partial-order reduction the check uses (null: none), as one process's.
 PropertyResult check_invariant_distributed(const tioa::SuccessorGenerator& generator,
                                            const tioa::StartSet& start,

@@ -10,11 +10,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "checker/fingerprint.hpp"
 #include "checker/interrupt.hpp"
 #include "checker/mapped_memory.hpp"
 #include "checker/memory_budget.hpp"
 #include "checker/parallel_for.hpp"
 #include "checker/state_store.hpp"
+#include "checker/trace.hpp"
 #include "tioa/errors.hpp"
 
 namespace checker {
@@ -64,16 +66,42 @@ template <class Body> void on_threads(std::uint32_t threads, std::uint64_t n, Bo
 // its id in the whole run, the id of its parent (no_id for a start state), and `by_id`,
 // the local ids in order of id (ids increase along it) for the trace. The level being
 // built also has each new state's smallest discovery key so far.
+//
+// On the fingerprint store (fingerprint.hpp) the store holds each state's fingerprint,
+// and the full states are kept only for the level just numbered (the frontier, from
+// `frontier_begin`) and the level being built, as one process keeps them.
 struct RankStates {
-  RankStates(std::uint32_t words, std::uint32_t threads) : store(words), inserters(threads) {
+  RankStates(std::uint32_t words, std::uint32_t threads, bool fingerprints)
+      : store(fingerprints ? 1 : words), inserters(threads), full_words(fingerprints ? words : 0) {
     store.set_inserters(threads, 1); // blocks of one id: no holes
   }
   StateStore store;
   std::uint32_t inserters;
+  std::uint32_t full_words; // the fingerprint store: a state's words (0: the exact store)
   MappedVector<std::uint32_t> id, parent; // (never held twice as they grow)
   MappedVector<StateId> by_id;
   StateId level_begin = 0;
-  std::vector<std::uint64_t> level_key; // [local - level_begin]
+  std::vector<std::uint64_t> level_key;        // [local - level_begin]
+  std::vector<Word> level_full, frontier_full; // the fingerprint store's full states
+  StateId frontier_begin = 0;                  // the local id of frontier_full's first
+
+  // A state of the frontier (on the exact store, any state).
+  const Word* state(StateId local) const {
+    return full_words ? frontier_full.data() + std::size_t{local - frontier_begin} * full_words
+                      : store.state(local);
+  }
+  // What the store holds for `state` (the state, or its fingerprint in `key`), and the
+  // hash its table and the ranks' partition use.
+  const Word* store_key(const Word* state, std::uint32_t words, Word& key,
+                        std::uint64_t& hash) const {
+    if (!full_words) {
+      hash = hash_state(state, words);
+      return state;
+    }
+    key = fingerprint(state, words);
+    hash = hash_state(&key, 1);
+    return &key;
+  }
 
   // Room to insert `more` states, from any number of threads at once.
   void reserve(std::uint64_t more) {
@@ -81,11 +109,18 @@ struct RankStates {
     if (store.size() + more + inserters > store.id_limit())
       store.make_room(more);
     level_key.resize(store.size() + more - level_begin, no_key);
+    level_full.resize(level_key.size() * full_words);
   }
   // Inserts a state found with `k` (room reserved); a state of the level being built keeps
   // its smallest key. Thread-safe.
-  void offer(const Word* state, std::uint64_t hash, std::uint64_t k, StateStore::IdBlock& ids) {
-    const auto claim = store.find_or_insert(state, hash, ids, [](StateId, std::uint32_t) {});
+  // `full`: the state whose key `state` is (the fingerprint store keeps it for the level).
+  void offer(const Word* state, std::uint64_t hash, std::uint64_t k, StateStore::IdBlock& ids,
+             const Word* full) {
+    const auto claim = store.find_or_insert(state, hash, ids, [&](StateId local, std::uint32_t) {
+      if (full_words)
+        std::copy(full, full + full_words,
+                  level_full.begin() + std::ptrdiff_t(local - level_begin) * full_words);
+    });
     if (claim.kind == StateStore::Claim::Kind::full)
       throw std::logic_error("distributed explorer: no room reserved in the store");
     if (claim.id < level_begin)
@@ -96,7 +131,10 @@ struct RankStates {
     }
   }
   // The level's new states are all inserted: drop the keys reserved for none.
-  void close_level() { level_key.resize(store.size() - level_begin); }
+  void close_level() {
+    level_key.resize(store.size() - level_begin);
+    level_full.resize(level_key.size() * full_words);
+  }
 };
 
 // Numbers the level's new states as one process would: by their keys among every rank's;
@@ -147,6 +185,9 @@ std::uint64_t number_level(RankStates& rs, std::uint64_t first, Collective& rank
     rs.parent[local] = k & start_key_bit ? no_id : static_cast<std::uint32_t>(k >> 32);
     rs.by_id.push_back(local);
   }
+  rs.frontier_begin = rs.level_begin; // the level just numbered is the next frontier
+  rs.frontier_full.swap(rs.level_full);
+  rs.level_full.clear();
   rs.level_begin += count;
   rs.level_key.clear();
   return total;
@@ -160,7 +201,7 @@ std::uint64_t first_target(const RankStates& rs, StateId begin, StateId end,
     on_threads(threads, end - begin, [&](std::uint64_t from, std::uint64_t to) {
       std::uint64_t mine = no_id;
       for (std::uint64_t i = begin + from; i < begin + to; ++i)
-        if (rs.id[i] < mine && target(tioa::State(rs.store.state(static_cast<StateId>(i)), 0)))
+        if (rs.id[i] < mine && target(tioa::State(rs.state(static_cast<StateId>(i)), 0)))
           mine = rs.id[i];
       std::uint64_t now = found.load();
       while (mine < now && !found.compare_exchange_weak(now, mine)) {
@@ -169,18 +210,26 @@ std::uint64_t first_target(const RankStates& rs, StateId begin, StateId end,
   return found.load();
 }
 
-// The states from a start state to `id`, asking the owner of each in turn.
+// The local id of the state `id` when this rank owns it.
+std::optional<StateId> local_of(const RankStates& rs, std::uint64_t id) {
+  const auto it =
+      std::lower_bound(rs.by_id.begin(), rs.by_id.end(), id,
+                       [&](StateId local, std::uint64_t wanted) { return rs.id[local] < wanted; });
+  if (it != rs.by_id.end() && rs.id[*it] == id)
+    return *it;
+  return std::nullopt;
+}
+
+// What the stores hold for the states from a start state to `id` (the states, or their
+// fingerprints), asking the owner of each in turn.
 std::vector<std::vector<Word>> path_to(const RankStates& rs, std::uint64_t id, Collective& ranks) {
   const std::uint32_t words = rs.store.words();
   std::vector<std::vector<Word>> path;
   for (;;) {
     std::vector<std::uint8_t> mine;
-    const auto it = std::lower_bound(
-        rs.by_id.begin(), rs.by_id.end(), id,
-        [&](StateId local, std::uint64_t wanted) { return rs.id[local] < wanted; });
-    if (it != rs.by_id.end() && rs.id[*it] == id) {
-      append_bytes(mine, rs.store.state(*it), words * sizeof(Word));
-      append_bytes(mine, &rs.parent[*it], 4);
+    if (const auto local = local_of(rs, id)) {
+      append_bytes(mine, rs.store.state(*local), words * sizeof(Word));
+      append_bytes(mine, &rs.parent[*local], 4);
     }
     std::vector<std::uint64_t> sizes;
     const std::vector<std::uint8_t> all = ranks.all_gather(mine, sizes);
@@ -198,6 +247,29 @@ std::vector<std::vector<Word>> path_to(const RankStates& rs, std::uint64_t id, C
   }
   std::reverse(path.begin(), path.end());
   return path;
+}
+
+// The states from a start state to `id`. On the fingerprint store they are rebuilt by
+// re-execution from the fingerprints (trace.hpp), ending at `last`: the state `id`, given
+// by the rank that kept it (null on the others).
+std::vector<std::vector<Word>> trace_states(const RankStates& rs, std::uint64_t id,
+                                            const std::vector<Word>* last,
+                                            const tioa::SuccessorGenerator& generator,
+                                            const tioa::StartSet& start, Collective& ranks) {
+  std::vector<std::vector<Word>> path = path_to(rs, id, ranks);
+  if (!rs.full_words)
+    return path;
+  std::vector<std::uint8_t> mine;
+  if (last)
+    append_bytes(mine, last->data(), last->size() * sizeof(Word));
+  std::vector<std::uint64_t> sizes;
+  const std::vector<std::uint8_t> all = ranks.all_gather(mine, sizes);
+  std::vector<Word> end(all.size() / sizeof(Word));
+  std::memcpy(end.data(), all.data(), end.size() * sizeof(Word));
+  std::vector<std::uint64_t> fingerprints;
+  for (const std::vector<Word>& held : path)
+    fingerprints.push_back(held.front());
+  return states_with_fingerprints(generator, start, fingerprints, end);
 }
 
 // An error of this rank alone, caught where it happened, so that the rank goes on making
@@ -234,6 +306,7 @@ struct ExpandPart {
   std::vector<Word> scratch;
   ZeroTimeReduction::Scratch reduction;
   std::uint64_t edges = 0, ended = 0, stuck = 0, first_stuck = no_id;
+  std::vector<Word> first_stuck_state;
 };
 
 } // namespace
@@ -268,7 +341,9 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
     out.stop = StopReason::state_limit;
     return out;
   }
-  RankStates rs(words, threads);
+  const bool fingerprints = options.store == StoreKind::fingerprint;
+  out.fingerprints = fingerprints;
+  RankStates rs(words, threads, fingerprints);
   std::size_t peak = 0;
   RankFailure failure;
 
@@ -375,12 +450,14 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
     try {
       start.enumerate(buffer.data(), 0, [&] {
         const std::uint64_t i = index++;
-        const std::uint64_t hash = hash_state(buffer.data(), words);
+        Word key_word;
+        std::uint64_t hash;
+        const Word* key = rs.store_key(buffer.data(), words, key_word, hash);
         if (owner_of(hash, size) == me)
           failure.guard([&] {
             const std::uint64_t before = rs.store.size();
             rs.reserve(1);
-            rs.offer(buffer.data(), hash, start_key_bit | i, ids);
+            rs.offer(key, hash, start_key_bit | i, ids, buffer.data());
             if (rs.store.size() > before && target && target(tioa::State(buffer.data(), 0)))
               ++targets;
           });
@@ -432,13 +509,16 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
             std::uint32_t step = 0;
             const auto send = [&](const Word* succ) {
               const std::uint64_t k = step_key(id, step++);
-              auto& t = part.to[static_cast<std::size_t>(owner_of(hash_state(succ, words), size))];
+              Word key_word;
+              std::uint64_t hash;
+              rs.store_key(succ, words, key_word, hash);
+              auto& t = part.to[static_cast<std::size_t>(owner_of(hash, size))];
               append_bytes(t, succ, words * sizeof(Word));
               append_bytes(t, &k, 8);
             };
             // As one process expands it (expansion.hpp): the reduction's successors, or all.
             const std::optional<std::size_t> reduced =
-                reduction ? reduction->reduce(rs.store.state(s), part.reduction) : std::nullopt;
+                reduction ? reduction->reduce(rs.state(s), part.reduction) : std::nullopt;
             std::size_t n = 0;
             if (reduced) {
               n = *reduced;
@@ -446,17 +526,20 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
                 send(part.reduction.successors.data() + k * words);
             } else {
               n = generator.successors(
-                  rs.store.state(s), part.scratch.data(),
+                  rs.state(s), part.scratch.data(),
                   [&](const Word* succ, const tioa::StepLabel&) { send(succ); });
             }
             part.edges += n;
             if (n > 0)
               continue;
-            if (ended && ended(tioa::State(rs.store.state(s), 0))) {
+            if (ended && ended(tioa::State(rs.state(s), 0))) {
               ++part.ended;
             } else {
               ++part.stuck;
-              part.first_stuck = std::min(part.first_stuck, id);
+              if (id < part.first_stuck) { // (its state, for a trace on the fingerprint store)
+                part.first_stuck = id;
+                part.first_stuck_state.assign(rs.state(s), rs.state(s) + words);
+              }
             }
           }
         });
@@ -479,19 +562,21 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
         on_threads(threads, count, [&](std::uint64_t from, std::uint64_t to) {
           StateStore::IdBlock& ids = id_blocks[next_block.fetch_add(1)];
           std::uint64_t hashes[insert_batch];
+          Word key_words[insert_batch];
+          const Word* keys[insert_batch];
           for (std::uint64_t at = from; at < to; at += insert_batch) {
             const std::uint64_t n = std::min<std::uint64_t>(insert_batch, to - at);
             for (std::uint64_t i = 0; i < n; ++i) {
               const auto* state =
                   reinterpret_cast<const Word*>(received.data() + (at + i) * record);
-              hashes[i] = hash_state(state, words);
+              keys[i] = rs.store_key(state, words, key_words[i], hashes[i]);
               rs.store.prefetch(hashes[i]);
             }
             for (std::uint64_t i = 0; i < n; ++i) {
               const std::uint8_t* r = received.data() + (at + i) * record;
               std::uint64_t k;
               std::memcpy(&k, r + words * sizeof(Word), 8);
-              rs.offer(reinterpret_cast<const Word*>(r), hashes[i], k, ids);
+              rs.offer(keys[i], hashes[i], k, ids, reinterpret_cast<const Word*>(r));
             }
           }
         });
@@ -508,12 +593,16 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
     stop = level_done(frontier_end, rs.level_begin);
   }
   std::uint64_t first_stuck = no_id;
+  const std::vector<Word>* first_stuck_state = nullptr;
   for (const ExpandPart& part : parts) {
     out.reduced_states += part.reduction.reduced;
     out.edges += part.edges;
     out.ended += part.ended;
     out.stuck += part.stuck;
-    first_stuck = std::min(first_stuck, part.first_stuck);
+    if (part.first_stuck < first_stuck) {
+      first_stuck = part.first_stuck;
+      first_stuck_state = &part.first_stuck_state;
+    }
   }
   out.edges = ranks.sum(out.edges);
   out.ended = ranks.sum(out.ended);
@@ -521,13 +610,20 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
   out.reduced_states = ranks.sum(out.reduced_states);
   if (const std::uint64_t first = ranks.min(first_stuck); first != no_id) {
     out.first_stuck = first;
-    out.to_first_stuck = path_to(rs, first, ranks);
+    out.to_first_stuck = trace_states(rs, first, first == first_stuck ? first_stuck_state : nullptr,
+                                      generator, start, ranks);
   }
   if (stop && *stop != StopReason::found && *stop != StopReason::state_limit)
     out.states = ranks.sum(rs.store.size()); // a level cut short: what each rank holds
   if (out.found) {
     out.states = *out.found + 1; // a sequential search stops at the target
-    out.to_found = path_to(rs, *out.found, ranks);
+    const std::vector<Word>* found_state = nullptr;
+    std::vector<Word> mine;
+    if (const auto local = local_of(rs, *out.found)) {
+      mine.assign(rs.state(*local), rs.state(*local) + words); // (the frontier's)
+      found_state = &mine;
+    }
+    out.to_found = trace_states(rs, *out.found, found_state, generator, start, ranks);
   }
   limits.spend_states(out.states); // (every rank: each holds the property's budget)
   if (out.depth == 0)              // stopped in level 0: the start states it has

@@ -29,7 +29,13 @@
 // note naming the rank (`failure`); a model's error is thrown on every rank, as one
 // process throws it. No rank is left waiting for one that stopped.
 //
-// Not yet: the fingerprint store, recorded edges, and the checks built on them.
+// On the fingerprint store a rank's store holds fingerprints, the owner of a state is that
+// of its fingerprint (so two states that share one meet, and count as one, as in one
+// process), and the trace is rebuilt by re-execution from the owners' fingerprints. The
+// full states of the frontier and of the level being built are kept, as one process
+// keeps them.
+//
+// Not yet: recorded edges, and the checks built on them.
 
 #include <optional>
 #include <string>
@@ -60,6 +66,7 @@ struct DistributedExploration {
   std::vector<std::vector<Word>> to_first_stuck;
   double seconds = 0;
   std::uint32_t threads = 1; // threads in each rank
+  bool fingerprints = false; // on the fingerprint store (fingerprint.hpp)
   std::string failure; // a rank out of memory stopped the run (stop: memory_limit): which, why
   std::size_t peak_rank_bytes = 0; // the largest resident memory of a rank
   bool complete() const { return stop == StopReason::finished || stop == StopReason::found; }

@@ -13,7 +13,6 @@ PropertyResult check_invariant(const Automaton& system, const StatePredicate& in
   if (options.por)
     reduction.emplace(generator, invariant);
   if (Collective* ranks = distributed()) {
-    require_distributable(options);
     return check_invariant_distributed(generator, system.start(), invariant, options,
                                        reduction ? &*reduction : nullptr, *ranks);
   }

@@ -34,19 +34,14 @@ std::vector<Step> steps_between(const tioa::SuccessorGenerator& generator, const
   return found;
 }
 
-// The states along `path` (ids from a start state) of a run on the fingerprint store,
-// rebuilt by re-execution: the start state is the first of the start set with the
-// fingerprint of path[0] (the one that got the id), and each next state a successor of the
-// last with the fingerprint of the next id. Only two states with one fingerprint can make a
-// choice wrong, so the search backtracks over the candidates in the generator's order (a
-// wrong one would soon have no successor with the next fingerprint); the last state must
-// be `last` when it is known. Throws if no path fits, which a collision alone cannot
-// cause.
-std::vector<std::vector<Word>> reexecute(const tioa::SuccessorGenerator& generator,
-                                         const Exploration& ex, const std::vector<StateId>& path,
-                                         const std::vector<Word>& last) {
+} // namespace
+
+std::vector<std::vector<Word>> states_with_fingerprints(const tioa::SuccessorGenerator& generator,
+                                                        const tioa::StartSet& start,
+                                                        const std::vector<std::uint64_t>& path,
+                                                        const std::vector<Word>& last) {
   const std::uint32_t words = generator.words();
-  auto fingerprint_of = [&](StateId id) { return ex.store.state(id)[0]; };
+  auto fingerprint_of = [&](std::size_t i) { return path[i]; };
   std::vector<std::vector<Word>> states;
   // Depth-first over the candidates; true when states holds the whole path.
   auto extend_from = [&](auto& self, std::size_t i) -> bool {
@@ -58,7 +53,7 @@ std::vector<std::vector<Word>> reexecute(const tioa::SuccessorGenerator& generat
     std::vector<std::vector<Word>> candidates;
     generator.successors(
         from.data(), scratch.data(), [&](const Word* succ, const tioa::StepLabel&) {
-          if (fingerprint(succ, words) != fingerprint_of(path[i + 1]))
+          if (fingerprint(succ, words) != fingerprint_of(i + 1))
             return;
           std::vector<Word> state(succ, succ + words);
           if (std::find(candidates.begin(), candidates.end(), state) == candidates.end())
@@ -75,8 +70,8 @@ std::vector<std::vector<Word>> reexecute(const tioa::SuccessorGenerator& generat
   struct Found {};
   std::vector<Word> buffer(words + 1, 0);
   try {
-    ex.start->enumerate(buffer.data(), 0, [&] {
-      if (fingerprint(buffer.data(), words) != fingerprint_of(path.front()))
+    start.enumerate(buffer.data(), 0, [&] {
+      if (fingerprint(buffer.data(), words) != fingerprint_of(0))
         return;
       states.assign(1, std::vector<Word>(buffer.begin(), buffer.begin() + words));
       if (extend_from(extend_from, 0))
@@ -85,12 +80,10 @@ std::vector<std::vector<Word>> reexecute(const tioa::SuccessorGenerator& generat
   } catch (const Found&) {
     return states;
   }
-  throw std::logic_error("fingerprint store: no path of the model has the fingerprints of the "
-                         "path to state " +
-                         std::to_string(path.back()));
+  throw std::logic_error("fingerprint store: no path of the model has the fingerprints of a "
+                         "path of " +
+                         std::to_string(path.size()) + " states");
 }
-
-} // namespace
 
 TraceAction trace_action(const tioa::SuccessorGenerator& generator, const tioa::StepLabel& label) {
   TraceAction out;
@@ -120,7 +113,10 @@ Trace trace_to(const tioa::SuccessorGenerator& generator, const Exploration& ex,
       last = ex.found_state;
     else if (!ex.stuck.empty() && ex.stuck.front() == id)
       last = ex.first_stuck_state;
-    const auto states = reexecute(generator, ex, path, last);
+    std::vector<std::uint64_t> fingerprints; // what the store holds for each id
+    for (const StateId at : path)
+      fingerprints.push_back(ex.store.state(at)[0]);
+    const auto states = states_with_fingerprints(generator, *ex.start, fingerprints, last);
     trace.steps.push_back({"", 0, states.front()});
     for (std::size_t i = 1; i < states.size(); ++i)
       extend(generator, trace, states[i].data());

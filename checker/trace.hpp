@@ -43,6 +43,19 @@ TraceAction trace_action(const tioa::SuccessorGenerator& generator, const tioa::
 // regenerating the parent's successors (the first one equal to the child).
 Trace trace_to(const tioa::SuccessorGenerator& generator, const Exploration& ex, StateId id);
 
+// The states of a path of a run on the fingerprint store (fingerprint.hpp), rebuilt by
+// re-execution from the fingerprints of its states (`path`, from a start state on): the
+// start state is the first of `start` with the first fingerprint, and each next state a
+// successor of the last with the next fingerprint. Only two states with one fingerprint
+// can make a choice wrong, so the search backtracks over the candidates in the
+// generator's order (a wrong one would soon have no successor with the next
+// fingerprint); the last state must be `last` when it is known (not empty). Throws if no
+// path fits, which a collision alone cannot cause.
+std::vector<std::vector<Word>> states_with_fingerprints(const tioa::SuccessorGenerator& generator,
+                                                        const tioa::StartSet& start,
+                                                        const std::vector<std::uint64_t>& path,
+                                                        const std::vector<Word>& last);
+
 // Appends a step from the trace's last state to `next` (one that lasts `duration`, when
 // given: a tick and an action may lead to the same state); false when none leads there.
 bool extend(const tioa::SuccessorGenerator& generator, Trace& trace, const Word* next,

@@ -27,6 +27,8 @@ void require_same(const PropertyResult& one, const PropertyResult& other, int ra
   CHECK(other.depth == one.depth);
   CHECK(other.por == one.por);
   CHECK(other.reduced_states == one.reduced_states);
+  CHECK(other.store == one.store);
+  CHECK(other.omission_probability == one.omission_probability);
   CHECK(other.coverage.count == one.coverage.count);
   CHECK(other.coverage.of == one.coverage.of);
   REQUIRE(other.trace.has_value() == one.trace.has_value());
@@ -58,6 +60,16 @@ tioa::Automaton counter_with_hole() {
       .pre([=](const State& s, const Params&) { return s[x] < (1 << 18) - 1; })
       .eff([=](State& s, const Params&) { s[x] = s[x] + 1; });
   return a;
+}
+
+// y counts up to 5 and stops there: a deadlock five steps from the start.
+tioa::Automaton counts_to_five() {
+  tioa::Automaton stops("stops");
+  const auto y = stops.integer("y", 0, 5, 0);
+  stops.internal("inc")
+      .pre([=](const State& s, const Params&) { return s[y] < 5; })
+      .eff([=](State& s, const Params&) { s[y] = s[y] + 1; });
+  return stops;
 }
 
 } // namespace
@@ -123,11 +135,7 @@ TEST_CASE("distributed: invariants and deadlocks as one process finds them",
     CHECK(same_on_every_rank_count([&] {
             return check_no_deadlock(good.system, options);
           }).verdict == Verdict::holds);
-    tioa::Automaton stops("stops");
-    const auto y = stops.integer("y", 0, 5, 0);
-    stops.internal("inc")
-        .pre([=](const State& s, const Params&) { return s[y] < 5; })
-        .eff([=](State& s, const Params&) { s[y] = s[y] + 1; });
+    const tioa::Automaton stops = counts_to_five();
     const PropertyResult r =
         same_on_every_rank_count([&] { return check_no_deadlock(stops, options); });
     CHECK(r.verdict == Verdict::violated);
@@ -259,5 +267,31 @@ TEST_CASE("distributed: with the partial-order reduction, the reduced graph of o
         same_on_every_rank_count([&] { return check_invariant(workers, below_three, options); });
     CHECK(broken.verdict == Verdict::violated);
     CHECK(broken.reduced_states > 0);
+  }
+}
+
+TEST_CASE("distributed: on the fingerprint store, as one process",
+          "[checker][distributed][store]") {
+  const auto good = fischer::build(4, 1, 2);
+  const auto bad = fischer::build(4, 2, 1);
+  for (const unsigned threads : {1u, 2u}) {
+    ExploreOptions options = with_por(false);
+    options.threads = threads;
+    options.store = StoreKind::fingerprint;
+    const PropertyResult holds = same_on_every_rank_count(
+        [&] { return check_invariant(good.system, good.at_most_one_in_cs, options); });
+    CHECK(holds.verdict == Verdict::incomplete); // "holds up to hash collisions"
+    CHECK(holds.store == "fingerprint");
+    CHECK(holds.omission_probability.has_value());
+    const PropertyResult broken = same_on_every_rank_count(
+        [&] { return check_invariant(bad.system, bad.at_most_one_in_cs, options); });
+    CHECK(broken.verdict == Verdict::violated);
+    REQUIRE(broken.trace);
+    CHECK(broken.trace->length() > 0);
+    const tioa::Automaton stops = counts_to_five();
+    const PropertyResult stuck =
+        same_on_every_rank_count([&] { return check_no_deadlock(stops, options); });
+    CHECK(stuck.verdict == Verdict::violated);
+    CHECK(stuck.trace->length() == 5);
   }
 }

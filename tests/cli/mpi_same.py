@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """Distributed exploration (issue 18): under `mpirun -np N` every invariant, every
 deadlock / time-lock check and every legal-set closure of every built-in model (default
-instance, the partial-order reduction on where it acts, at most --max-states states) gives the same JSON result as one
-process: verdict, message, states, edges, depth, coverage and trace; only `seconds`,
-`threads` and `ranks` may differ, and `ranks` must be N. One process runs with one
-thread, each rank with two. A property that does not run distributed yet must say so in
-one line on stderr with exit 2; in a suite (two models' entries), it is reported not run
-(incomplete) and the other entries are one process's.
+instance, the partial-order reduction on where it acts, at most --max-states states)
+gives the same JSON result as one process: verdict, message, states, edges, depth,
+coverage and trace; only `seconds`, `threads` and `ranks` may differ, and `ranks` must be
+N. One process runs with one thread, each rank with two. A property that does not run
+distributed yet must say so in one line on stderr with exit 2. Three of them also on the
+fingerprint store; and a suite (two models' entries), where an entry that does not run
+distributed is reported not run (incomplete) and the others are one process's.
 
 usage: mpi_same.py TIOA_CHECK [--ranks 2 --ranks 4] [--max-states N]
 Exit 77 (skipped) when mpirun is missing or tioa-check was built without MPI."""
@@ -127,6 +128,25 @@ def main():
             compared += 1
             print(f"same {label}: " + ", ".join(f"{p['name']} {p['verdict']} {p['states']}"
                                                  for p in mine))
+    # The fingerprint store (a state's owner is that of its fingerprint).
+    for model, prop in [("fischer", "mutex"), ("vlayer-mc", "no-timelock"),
+                        ("path-reservation", "mutual-exclusion")]:
+        command = ["check", model, "--prop", prop, "--store", "fingerprint", "--json", "-j", "1",
+                   "--max-states", str(args.max_states), "--max-seconds", "20"]
+        one = subprocess.run([args.tioa] + command, capture_output=True, text=True, timeout=120)
+        mine = properties(json.loads(one.stdout))
+        for n in ranks:
+            label = f"{model} {prop} --store fingerprint -np {n}"
+            run = subprocess.run([mpirun, "-np", str(n), args.tioa] + two_threads(command),
+                                 env=env, capture_output=True, text=True, timeout=300)
+            if run.returncode != one.returncode:
+                failures.append(f"{label}: exit {run.returncode}, one process {one.returncode}")
+                continue
+            if strip(properties(json.loads(run.stdout))) != strip(mine):
+                failures.append(f"{label}: differs")
+                continue
+            compared += 1
+            print(f"same {label}: {mine[0]['verdict']}, {mine[0]['states']} states")
     # The suite of two models: every entry that runs distributed as one process runs it,
     # every other one reported as not run (incomplete), and the suite goes on after it.
     command = ["suite", "--model", "path-reservation", "--model", "token-ring", "--json", "-j",
