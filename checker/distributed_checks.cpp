@@ -76,9 +76,7 @@ PropertyResult check_invariant_distributed(const tioa::SuccessorGenerator& gener
     r.trace = trace_through(generator, ex.to_found);
     r.trace_role = "counterexample";
     r.trace_kind = "invariant";
-    r.message = std::string("a reachable state breaks the invariant; ") +
-                (ex.reduced_states > 0 ? "trace (of the reduced graph): " : "shortest trace: ") +
-                std::to_string(r.trace->length()) + " steps";
+    r.message = invariant_broken(r.trace->length(), ex.reduced_states);
   } else if (!ex.complete()) {
     mark_cut_short(r, ex, "no violation in the states covered");
   } else {

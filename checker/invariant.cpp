@@ -27,9 +27,7 @@ PropertyResult check_invariant(const Automaton& system, const StatePredicate& in
     r.trace = trace_to(generator, ex, *ex.found);
     r.trace_role = "counterexample";
     r.trace_kind = "invariant";
-    r.message = std::string("a reachable state breaks the invariant; ") +
-                (ex.reduced_states > 0 ? "trace (of the reduced graph): " : "shortest trace: ") +
-                std::to_string(r.trace->length()) + " steps";
+    r.message = invariant_broken(r.trace->length(), ex.reduced_states);
   } else if (!ex.complete()) {
     mark_incomplete(r, ex, "no violation in the states covered");
   } else {

@@ -78,6 +78,12 @@ std::string reachable_states(std::uint64_t count, const Exploration& ex) {
   return reachable_states(count, ex.reduced_states);
 }
 
+std::string invariant_broken(std::size_t trace_length, std::uint64_t reduced_states) {
+  return std::string("a reachable state breaks the invariant; ") +
+         (reduced_states > 0 ? "trace (of the reduced graph): " : "shortest trace: ") +
+         std::to_string(trace_length) + " steps";
+}
+
 std::string reachable_states(std::uint64_t count, std::uint64_t reduced_states) {
   if (reduced_states > 0)
     return "the " + std::to_string(count) + " reachable states of the reduced graph";

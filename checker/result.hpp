@@ -81,6 +81,9 @@ PropertyResult result_of(const std::string& kind, const Exploration& ex,
 // "N reachable states", or, when zero-time steps were reduced, "the N reachable states of
 // the reduced graph": a reduced search visits only some of the reachable states.
 std::string reachable_states(std::uint64_t count, const Exploration& ex);
+// The message of an invariant broken, with the length of its trace (`reduced_states`:
+// the states the reduction expanded in part, 0 for none).
+std::string invariant_broken(std::size_t trace_length, std::uint64_t reduced_states);
 // The same from how many states the reduction expanded in part (0: none).
 std::string reachable_states(std::uint64_t count, std::uint64_t reduced_states);
 

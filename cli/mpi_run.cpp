@@ -28,6 +28,22 @@ int host_ranks = 1;     // the ranks on this machine
 std::string held_error; // a secondary rank's error line, printed only if it is its own
 
 #ifdef TIOA_WITH_MPI
+// A round of an exchange cut into rounds (MPI's counts and displacements are ints): for
+// each rank's `sizes` bytes, the count of the next `piece` bytes from `done` on, and its
+// displacement. Returns the round's total.
+std::size_t round_counts(const std::vector<std::uint64_t>& sizes, std::uint64_t done,
+                         std::uint64_t piece, std::vector<int>& counts,
+                         std::vector<int>& displacements) {
+  int at = 0;
+  for (std::size_t r = 0; r < sizes.size(); ++r) {
+    const std::uint64_t left = sizes[r] > done ? sizes[r] - done : 0;
+    counts[r] = static_cast<int>(std::min(left, piece));
+    displacements[r] = at;
+    at += counts[r];
+  }
+  return static_cast<std::size_t>(at);
+}
+
 // The checker's collective calls over MPI_COMM_WORLD. Messages are cut into rounds that
 // MPI's int counts can say.
 class MpiCollective final : public checker::Collective {
@@ -57,26 +73,14 @@ public:
     longest = max(longest);
     std::vector<int> sc(n), sd(n), rc(n), rd(n);
     std::vector<std::uint8_t> send_round, receive_round;
-    // The counts and displacements of this round for the pairs' `sizes`; returns the total.
-    auto round_counts = [&](const std::vector<std::uint64_t>& sizes, std::uint64_t done,
-                            std::vector<int>& counts, std::vector<int>& displacements) {
-      int at = 0;
-      for (std::size_t r = 0; r < n; ++r) {
-        const std::uint64_t left = sizes[r] > done ? sizes[r] - done : 0;
-        counts[r] = static_cast<int>(std::min(left, piece));
-        displacements[r] = at;
-        at += counts[r];
-      }
-      return static_cast<std::size_t>(at);
-    };
     std::uint64_t done = 0;
     do {
-      send_round.resize(round_counts(send_sizes, done, sc, sd));
+      send_round.resize(round_counts(send_sizes, done, piece, sc, sd));
       for (std::size_t r = 0; r < n; ++r)
         if (sc[r] > 0)
           std::memcpy(send_round.data() + sd[r], data.data() + offsets[r] + done,
                       static_cast<std::size_t>(sc[r]));
-      receive_round.resize(round_counts(receive_sizes, done, rc, rd));
+      receive_round.resize(round_counts(receive_sizes, done, piece, rc, rd));
       MPI_Alltoallv(send_round.data(), sc.data(), sd.data(), MPI_BYTE, receive_round.data(),
                     rc.data(), rd.data(), MPI_BYTE, MPI_COMM_WORLD);
       for (std::size_t r = 0; r < n; ++r)
@@ -105,13 +109,7 @@ public:
     std::vector<std::uint8_t> round;
     std::uint64_t done = 0;
     do {
-      int at = 0;
-      for (std::size_t r = 0; r < n; ++r) {
-        counts[r] = static_cast<int>(std::min(sizes[r] > done ? sizes[r] - done : 0, piece));
-        displacements[r] = at;
-        at += counts[r];
-      }
-      round.resize(static_cast<std::size_t>(at));
+      round.resize(round_counts(sizes, done, piece, counts, displacements));
       const int mine_now = counts[static_cast<std::size_t>(rank_)];
       MPI_Allgatherv(mine.data() + std::min<std::uint64_t>(done, mine.size()), mine_now, MPI_BYTE,
                      round.data(), counts.data(), displacements.data(), MPI_BYTE, MPI_COMM_WORLD);

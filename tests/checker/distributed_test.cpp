@@ -62,6 +62,22 @@ tioa::Automaton counter_with_hole() {
   return a;
 }
 
+// The model error each rank's invariant check throws ("no error": none), for 1 to 4 ranks.
+std::vector<std::string> model_errors(const tioa::Automaton& a, const StatePredicate& invariant) {
+  std::vector<std::string> out;
+  for (int ranks = 1; ranks <= 4; ++ranks)
+    for (std::string& what : ThreadRanks::run<std::string>(ranks, [&] {
+           try {
+             check_invariant(a, invariant, {});
+             return std::string("no error");
+           } catch (const tioa::ModelError& e) {
+             return std::string(e.what());
+           }
+         }))
+      out.push_back(std::move(what));
+  return out;
+}
+
 // y counts up to 5 and stops there: a deadlock five steps from the start.
 tioa::Automaton counts_to_five() {
   tioa::Automaton stops("stops");
@@ -192,16 +208,8 @@ TEST_CASE("distributed: a rank that fails stops every rank, none waits for it",
   const StatePredicate anything = [](const State&) { return true; };
   SECTION("a model's error: every rank throws it, as one process does") {
     CHECK_THROWS_AS(check_invariant(model_error, anything, {}), tioa::ModelError);
-    for (int ranks = 1; ranks <= 4; ++ranks)
-      for (const std::string& what : ThreadRanks::run<std::string>(ranks, [&] {
-             try {
-               check_invariant(model_error, anything, {});
-               return std::string("no error");
-             } catch (const tioa::ModelError& e) {
-               return std::string(e.what());
-             }
-           }))
-        CHECK(what == "x = 5 has no successor in this model");
+    for (const std::string& what : model_errors(model_error, anything))
+      CHECK(what == "x = 5 has no successor in this model");
   }
   SECTION("the checked predicate's error, on the rank that owns the state") {
     const tioa::Slot x = slot_of(memory, "x");
@@ -210,16 +218,8 @@ TEST_CASE("distributed: a rank that fails stops every rank, none waits for it",
         throw tioa::ModelError("the predicate cannot read x = 3");
       return true;
     };
-    for (int ranks = 1; ranks <= 4; ++ranks)
-      for (const std::string& what : ThreadRanks::run<std::string>(ranks, [&] {
-             try {
-               check_invariant(model_error, throws, {});
-               return std::string("no error");
-             } catch (const tioa::ModelError& e) {
-               return std::string(e.what());
-             }
-           }))
-        CHECK(what == "the predicate cannot read x = 3");
+    for (const std::string& what : model_errors(model_error, throws))
+      CHECK(what == "the predicate cannot read x = 3");
   }
   SECTION("out of memory on one rank: incomplete on every rank, saying which") {
     for (int ranks = 1; ranks <= 4; ++ranks)
