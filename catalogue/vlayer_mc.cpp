@@ -1,5 +1,9 @@
 #include "catalogue/vlayer_mc.hpp"
 
+#include <cstring>
+
+#include "checker/collective.hpp"
+#include "models/vlayer_mc/branch_tally.hpp"
 #include "models/vlayer_mc/vlayer.hpp"
 #include "proofs/lemma_7_3.hpp"
 #include "proofs/lemma_7_4.hpp"
@@ -11,6 +15,77 @@
 #include "tioa/operators.hpp"
 
 namespace catalogue {
+
+namespace {
+
+// How often each branch of Fig. 7 fired in the property's explorations, as figures
+// (branch_tally.hpp: distinct computations, robots per rule of calctarget).
+void add_fig7_figures(const vlayer_mc::BranchCounts& n, checker::PropertyResult& r) {
+  const auto figure = [&](const char* name, std::uint64_t value) {
+    r.figures.emplace_back(name, std::to_string(value));
+  };
+  figure("Fig. 7 computations (distinct)", n.computations);
+  figure("Fig. 7 lines 7-12 on the curve, reassigning", n.on_curve);
+  figure("Fig. 7 lines 13-18 no curve neighbour, reassigning", n.no_curve_neighbour);
+  figure("Fig. 7 lines 19-22 boundary, reassigning", n.boundary);
+  figure("Fig. 7 lines 30-31 robots to a neighbour's centre", n.to_centre);
+  figure("Fig. 7 lines 32-33 robots onto the curve", n.onto_curve);
+  figure("Fig. 7 lines 35-36 robots to an end", n.to_end);
+  figure("Fig. 7 line 38 robots between neighbours", n.between);
+  figure("Fig. 7 robots off the curve staying", n.stays);
+}
+
+// The computations every rank of a distributed run recorded, on every rank: each rank sends
+// its records as 32-bit words (u, key size, key, then the branches).
+std::vector<vlayer_mc::BranchRecord> gathered(checker::Collective& ranks,
+                                              const std::vector<vlayer_mc::BranchRecord>& mine) {
+  std::vector<std::int32_t> words;
+  for (const vlayer_mc::BranchRecord& r : mine) {
+    words.push_back(r.u);
+    words.push_back(static_cast<std::int32_t>(r.key.size()));
+    words.insert(words.end(), r.key.begin(), r.key.end());
+    const vlayer_mc::TargetBranches& b = r.branches;
+    words.insert(words.end(), {static_cast<std::int32_t>(b.assign), b.reassigned ? 1 : 0,
+                               b.to_centre, b.onto_curve, b.to_end, b.between, b.stays});
+  }
+  std::vector<std::uint8_t> bytes;
+  checker::append_bytes(bytes, words.data(), words.size() * sizeof(std::int32_t));
+  std::vector<std::uint64_t> sizes;
+  const std::vector<std::uint8_t> all = ranks.all_gather(bytes, sizes);
+  std::vector<std::int32_t> in(all.size() / sizeof(std::int32_t));
+  std::memcpy(in.data(), all.data(), in.size() * sizeof(std::int32_t));
+  std::vector<vlayer_mc::BranchRecord> records;
+  for (std::size_t at = 0; at < in.size();) {
+    vlayer_mc::BranchRecord r;
+    r.u = in[at];
+    const auto size = static_cast<std::size_t>(in[at + 1]);
+    r.key.assign(in.begin() + static_cast<std::ptrdiff_t>(at + 2),
+                 in.begin() + static_cast<std::ptrdiff_t>(at + 2 + size));
+    const std::int32_t* b = in.data() + at + 2 + size;
+    r.branches = {static_cast<mc::AssignBranch>(b[0]), b[1] != 0, b[2], b[3], b[4], b[5], b[6]};
+    records.push_back(std::move(r));
+    at += 2 + size + 7;
+  }
+  return records;
+}
+
+// `property` counting, in an epoch of its own, the branches of Fig. 7 its explorations
+// take. Over several processes each records the computations it made; the figures count
+// the distinct ones over all of them, as one process would.
+checker::Property counting_fig7(checker::Property property,
+                                std::shared_ptr<vlayer_mc::BranchTally> tally) {
+  property.run = [run = std::move(property.run), tally](const checker::ExploreOptions& o) {
+    tally->start_epoch();
+    checker::PropertyResult r = run(o);
+    checker::Collective* ranks = checker::distributed();
+    add_fig7_figures(
+        ranks ? vlayer_mc::sum_distinct(gathered(*ranks, tally->records())) : tally->counts(), r);
+    return r;
+  };
+  return property;
+}
+
+} // namespace
 
 vlayer_mc::VlConfig vlayer_config(const ParamValues& p) {
   vlayer_mc::VlConfig c;
@@ -41,13 +116,16 @@ ModelDefinition vlayer_mc_definition() {
   d.name = "vlayer-mc";
   d.description = "VLayer[MC]: RW, VW, VBcast, VBDelay, CN, VN composed as in seed 000 Def 4.1 "
                   "and §5.5, on a rows x cols grid with a b x b lattice per region (time: quanta; "
-                  "models/vlayer_mc/README.md); robots start at the bottom-left corner, no node "
-                  "failed";
+                  "models/vlayer_mc/README.md); robots start on the bottom row of the lattice (or "
+                  "together at its bottom-left corner), no node failed";
   d.params = {
       {"rows", 1, 1, 3, "rows of regions"},
       {"cols", 2, 1, 3, "columns of regions"},
       {"nbh", 4, 4, 8, "neighbourhood: 4 (seed 002) or 8 (seed 000 §4.1)"},
-      {"robots", 1, 1, 3, "number of robots (clients)"},
+      {"robots", 1, 1, 6, "number of robots (clients)"},
+      catalogue::ParamSpec::choice("place", "row", {"row", "corner"},
+                                   "start points: 'row' robot p at (p, rows*b), on the bottom row "
+                                   "of the lattice as drawn, 'corner' every robot at (0, rows*b)"),
       {"b", 2, 2, 8, "lattice units per region side (even)"},
       {"delta", 6, 2, 64, "round length δ in quanta (seed 000 §5.5)"},
       {"d", 1, 1, 16, "VBcast delay bound d"},
@@ -61,8 +139,12 @@ ModelDefinition vlayer_mc_definition() {
        true, true},
       {"rho2", ParamValue(mc::Rational(9, 10)), 0, 1, "damping of assign", ParamKind::rational,
        true, true},
-      {"robot_faults", 0, 0, 1, "1: robots fail and restart at any time (Fail(VBDelay_p||CN_p))"},
-      {"vsa_faults", 0, 0, 1, "1: VW fails and restarts VSAs at any time (Fail(VN_u))"},
+      {"robot_faults", 0, 0, 1,
+       "1: robots fail and restart at any time (Fail(VBDelay_p||CN_p)), in the lemmas of §7.2 "
+       "after t0 too"},
+      {"vsa_faults", 0, 0, 1,
+       "1: VW fails and restarts VSAs at any time (Fail(VN_u)), in the lemmas of §7.2 after t0 "
+       "too"},
       catalogue::ParamSpec::change(
           "cn_repair", "1: a GPSupdate that finds a CN's view wrong resets its velocity and "
                        "target (README D25; the paper's CN records position and time only)"),
@@ -107,17 +189,27 @@ ModelDefinition vlayer_mc_definition() {
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     if (p.at("nbh") != 4 && p.at("nbh") != 8)
       return "nbh must be 4 or 8, not " + p.at("nbh").text();
-    return vlayer_mc::invalid(vlayer_config(p));
+    const vlayer_mc::VlConfig c = vlayer_config(p);
+    if (const auto why = vlayer_mc::invalid(c))
+      return why;
+    if (p.at("place").text() == "row" && c.robots > c.lattice().width())
+      return "place=row puts robot p at x = p: " + std::to_string(c.robots) +
+             " robots need a lattice " + std::to_string(c.robots) + " points wide, this one has " +
+             std::to_string(c.lattice().width()) + " (place=corner, or a larger cols or b)";
+    return std::nullopt;
   };
   d.build = [](const ParamValues& p) {
-    const vlayer_mc::VlConfig c = vlayer_config(p);
+    vlayer_mc::VlConfig c = vlayer_config(p);
+    c.branch_tally = std::make_shared<vlayer_mc::BranchTally>();
     const vlayer_mc::Lattice lattice = c.lattice();
     const vlayer_mc::Faults faults{.robots = p.at("robot_faults") == 1,
                                    .vsas = p.at("vsa_faults") == 1};
     const tioa::Automaton layer = vlayer_mc::vlayer(c, faults);
+    // y = rows·b: the lattice's last row (drawn at the bottom), off the curve (row 0, y = b/2).
+    const bool corner = p.at("place").text() == "corner";
     std::vector<vlayer_mc::Point> at;
     for (int robot = 0; robot < c.robots; ++robot)
-      at.push_back(lattice.point(robot, lattice.height() - 1));
+      at.push_back(lattice.point(corner ? 0 : robot, lattice.height() - 1));
     const auto window = p.at("window").text() == "closed" ? vlayer_mc::MWindow::closed
                                                           : vlayer_mc::MWindow::as_printed;
     ModelInstance m{tioa::Start(layer, vlayer_mc::placed_start(layer, at)), {}, "1 time unit"};
@@ -129,7 +221,8 @@ ModelDefinition vlayer_mc_definition() {
                                               : vlayer_mc::RmcReading::loose;
     const vlayer_mc::ArbitraryStarts starts{
         .samples = static_cast<std::uint64_t>(p.at("samples").integer()),
-        .seed = static_cast<std::uint64_t>(p.at("seed").integer())};
+        .seed = static_cast<std::uint64_t>(p.at("seed").integer()),
+        .faults = faults};
     checker::Property no_timelock =
         custom_property("no-timelock", "every reachable state has an action or a tick",
                         [=](const checker::ExploreOptions& o) {
@@ -186,6 +279,8 @@ ModelDefinition vlayer_mc_definition() {
               const auto simulation = vlayer_mc::check_lemma_7_6(c, layer, window, o, reading);
               return vlayer_mc::theorem_7_8(into_lmc, simulation, related);
             })};
+    for (checker::Property& property : m.properties)
+      property = counting_fig7(std::move(property), c.branch_tally);
     return m;
   };
   // Each well under a few seconds (tests/catalogue/vlayer_mc/*_test.cpp pin the counts).
@@ -227,7 +322,17 @@ ModelDefinition vlayer_mc_definition() {
              // A client buffer that delays (e = 1) and the slack ε = 1 (δ = 10 meets the
              // round-length rule, 9): the instance, and Lemma 7.3 on 1×2 fully repaired.
              {slow_1x2, "no-timelock", checker::Verdict::holds},
-             {slow_repaired_1x2, "lemma-7.3", checker::Verdict::incomplete}};
+             {slow_repaired_1x2, "lemma-7.3", checker::Verdict::incomplete},
+             // Instances where each branch of Fig. 7 moves a robot (issue 15; the reports
+             // count them): the boundary (2 robots off the curve), the curve (5 robots in
+             // one region of it), no curve neighbour (5 robots two rows off the curve).
+             {{{"rows", 2}, {"cols", 1}, {"robots", 2}}, "no-timelock", checker::Verdict::holds},
+             {{{"robots", 5}, {"place", ParamValue::choice("corner")}},
+              "no-timelock",
+              checker::Verdict::holds},
+             {{{"rows", 3}, {"cols", 1}, {"robots", 5}, {"place", ParamValue::choice("corner")}},
+              "no-timelock",
+              checker::Verdict::holds}};
   return d;
 }
 

@@ -16,6 +16,23 @@ std::string xml_escape(const std::string& text, bool attribute) {
   return support::xml_escape(text, attribute);
 }
 
+namespace {
+
+// <properties> (named values of a suite, or a case's figures), indented; nothing when empty.
+void write_properties(std::ostream& out,
+                      const std::vector<std::pair<std::string, std::string>>& properties,
+                      const std::string& indent) {
+  if (properties.empty())
+    return;
+  out << indent << "<properties>\n";
+  for (const auto& [name, value] : properties)
+    out << indent << "  <property name=\"" << xml_escape(name) << "\" value=\"" << xml_escape(value)
+        << "\"/>\n";
+  out << indent << "</properties>\n";
+}
+
+} // namespace
+
 void write_junit(std::ostream& out, const std::vector<JunitSuite>& suites) {
   std::size_t total = 0, failures = 0, skipped = 0;
   double seconds = 0;
@@ -43,25 +60,20 @@ void write_junit(std::ostream& out, const std::vector<JunitSuite>& suites) {
                        "skipped=\"{}\" time=\"{:.3f}\">\n",
                        xml_escape(suite.name), suite.cases.size(), suite_failures, suite_skipped,
                        suite_seconds);
-    if (!suite.properties.empty()) {
-      out << "    <properties>\n";
-      for (const auto& [name, value] : suite.properties)
-        out << "      <property name=\"" << xml_escape(name) << "\" value=\"" << xml_escape(value)
-            << "\"/>\n";
-      out << "    </properties>\n";
-    }
+    write_properties(out, suite.properties, "    ");
     for (const auto& c : suite.cases) {
       out << fmt::format("    <testcase name=\"{}\" classname=\"{}\" time=\"{:.3f}\"",
                          xml_escape(c.name), xml_escape(suite.name), c.seconds);
-      if (c.outcome == JunitCase::Outcome::passed) {
+      if (c.outcome == JunitCase::Outcome::passed && c.properties.empty()) {
         out << "/>\n";
         continue;
       }
       out << ">\n";
+      write_properties(out, c.properties, "      ");
       if (c.outcome == JunitCase::Outcome::failed)
         out << "      <failure message=\"" << xml_escape(c.message) << "\">"
             << xml_escape(c.details, false) << "</failure>\n";
-      else
+      else if (c.outcome == JunitCase::Outcome::skipped)
         out << "      <skipped message=\"" << xml_escape(c.message) << "\"/>\n";
       out << "    </testcase>\n";
     }
@@ -86,6 +98,7 @@ JunitSuite junit_suite(const ModelRun& run, TraceMode trace) {
     c.name = r.name;
     c.seconds = r.seconds;
     c.message = r.message;
+    c.properties = r.figures;
     if (r.verdict == checker::Verdict::violated) {
       c.outcome = JunitCase::Outcome::failed;
       std::ostringstream details;

@@ -20,6 +20,7 @@ struct JunitCase {
   std::string message; // the one-line reason of a failure or skip
   std::string details; // the body of a failure
   double seconds = 0;
+  std::vector<std::pair<std::string, std::string>> properties; // the result's figures
 };
 
 struct JunitSuite {

@@ -49,7 +49,7 @@ PropertyResult check_lemma_7_3(const VlConfig& c, MWindow window, const Arbitrar
   r.coverage = u.coverage;
   r.notes.push_back("the bound: time t > eps_sample = " + std::to_string(c.eps_sample) +
                     " is, in whole quanta, t = eps_sample + 1");
-  r.notes.push_back("no failure or restart after t0 = 0; failed flags start arbitrary (D13)");
+  r.notes.push_back(faults_note(starts.faults));
   note_repairs(c, r);
   note_round_length(c, r);
   return r;

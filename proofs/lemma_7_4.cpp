@@ -72,6 +72,7 @@ PropertyResult check_lemma_7_4(const VlConfig& c, MWindow window, const Arbitrar
                      " (duplicates counted once by the exploration), not all of L1MC: its " +
                      "valuations are too many to enumerate");
   r.notes.push_back(lmc_measure_note);
+  r.notes.push_back(faults_note(starts.faults));
   note_repairs(c, r);
   note_round_length(c, r);
   return r;

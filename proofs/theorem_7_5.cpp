@@ -64,6 +64,7 @@ PropertyResult check_theorem_7_5(const VlConfig& c, MWindow window, const Arbitr
   r.seconds = first.seconds + second.seconds + direct.seconds;
   r.figures.emplace_back("known LMC", describe_known(known));
   r.notes.push_back(lmc_measure_note);
+  r.notes.push_back(faults_note(starts.faults));
   note_repairs(c, r);
   note_round_length(c, r);
   return r;

@@ -16,8 +16,8 @@ std::optional<std::string> invalid(const VlConfig& c) {
     return "the grid must have 1 to 9 regions";
   if (c.b < 2 || c.b % 2 != 0 || c.b > 8)
     return "b must be even, 2..8";
-  if (c.robots < 1 || c.robots > 3)
-    return "robots must be 1..3";
+  if (c.robots < 1 || c.robots > 6)
+    return "robots must be 1..6";
   if (c.d < 1 || c.e < 0 || c.eps < 0 || c.eps_sample < 1 || c.d_r < 0 || c.vmax < 1)
     return "need d >= 1, e >= 0, eps >= 0, eps_sample >= 1, d_r >= 0, vmax >= 1";
   if (c.delta < 2 || c.delta > 64)

@@ -2,6 +2,7 @@
 // The parameters of VLayer[MC] (issue 4 names): the grid, the robots, the lattice, and the
 // constants of seed 000 §4–5, every time a whole number of quanta.
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -9,6 +10,8 @@
 #include "models/vlayer_mc/lattice.hpp"
 
 namespace vlayer_mc {
+
+class BranchTally;
 
 struct VlConfig {
   int rows = 1, cols = 2;
@@ -38,6 +41,10 @@ struct VlConfig {
   // VN. With owned_ends, P_u is the part of Γ_u that u owns (up to sup P_u − 1 on the
   // lattice), for lines 33 and 35–38.
   bool owned_ends = false;
+  // Not a parameter: where VN_u's compute steps count the branches of Fig. 7 they take
+  // (branch_tally.hpp); null counts nowhere. Every automaton built from this config shares
+  // it.
+  std::shared_ptr<BranchTally> branch_tally;
 
   Lattice lattice() const { return Lattice(rows, cols, b, nbh); }
   // Phases (clock mod δ) at which VN_u sends its vn-update and computes the targets (D1).

@@ -25,20 +25,31 @@ const std::int32_t* TargetMemo::targets(std::vector<std::int32_t>& key) const {
     const std::shared_lock lock(mutex_);
     const auto found = table_.find(key);
     if (found != table_.end())
-      return found->second.data();
+      return counted(found->first, found->second);
   }
   std::vector<std::optional<Point>> heard(robots_);
   for (std::size_t p = 0; p < robots_; ++p)
     if (key[p] != none)
       heard[p] = key[p];
   const std::vector<int> counts(key.begin() + static_cast<std::ptrdiff_t>(robots_), key.end());
-  const std::vector<std::optional<Point>> computed = compute_targets(config_, u_, heard, counts);
+  TargetBranches branches;
+  const std::vector<std::optional<Point>> computed =
+      compute_targets(config_, u_, heard, counts, &branches);
   std::vector<std::int32_t> value(robots_, none);
   for (std::size_t p = 0; p < robots_; ++p)
     if (computed[p])
       value[p] = *computed[p];
   const std::unique_lock lock(mutex_);
-  return table_.try_emplace(key, std::move(value)).first->second.data(); // another may have won
+  // Another thread may have won; the entry it made is the one counted.
+  const auto [at, inserted] = table_.try_emplace(key, std::move(value), branches);
+  return counted(at->first, at->second);
+}
+
+const std::int32_t* TargetMemo::counted(const std::vector<std::int32_t>& key,
+                                        const Entry& entry) const {
+  if (config_.branch_tally)
+    config_.branch_tally->count(u_, key, entry.branches, entry.counted);
+  return entry.targets.data();
 }
 
 } // namespace vlayer_mc

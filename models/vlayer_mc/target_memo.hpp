@@ -4,14 +4,18 @@
 // state), and compute_targets builds the lattice, the assign parameters and rationals on
 // every call. A memo holds, per distinct input, the targets as lattice points (none for
 // a robot with no target), computed once; threads share it (lookups under a shared lock,
-// a miss computes outside the lock and inserts under an exclusive one).
+// a miss computes outside the lock and inserts under an exclusive one). With the config's
+// branch tally, each lookup counts its computation's branches of Fig. 7 there, once per
+// epoch.
 
+#include <atomic>
 #include <cstdint>
 #include <mutex>
 #include <shared_mutex>
 #include <unordered_map>
 #include <vector>
 
+#include "models/vlayer_mc/branch_tally.hpp"
 #include "models/vlayer_mc/config.hpp"
 
 namespace vlayer_mc {
@@ -34,13 +38,22 @@ private:
   struct Hash {
     std::size_t operator()(const std::vector<std::int32_t>& key) const;
   };
+  struct Entry {
+    Entry(std::vector<std::int32_t> t, const TargetBranches& b)
+        : targets(std::move(t)), branches(b) {}
+    std::vector<std::int32_t> targets;
+    TargetBranches branches;
+    mutable std::atomic<std::uint32_t> counted{0}; // the tally's epoch it was last counted in
+  };
+  // The entry's targets, counted in the tally when there is one.
+  const std::int32_t* counted(const std::vector<std::int32_t>& key, const Entry& entry) const;
 
   VlConfig config_;
   RegionId u_;
   std::size_t robots_, neighbours_;
   mutable std::shared_mutex mutex_;
   // Node-based: a value stays where it is while others are inserted.
-  mutable std::unordered_map<std::vector<std::int32_t>, std::vector<std::int32_t>, Hash> table_;
+  mutable std::unordered_map<std::vector<std::int32_t>, Entry, Hash> table_;
 };
 
 } // namespace vlayer_mc

@@ -15,7 +15,9 @@ std::vector<mc::QuantisedLength> curve_q(const Lattice& lattice) {
 
 std::vector<std::optional<Point>> compute_targets(const VlConfig& c, RegionId u,
                                                   const std::vector<std::optional<Point>>& reported,
-                                                  const std::vector<int>& counts) {
+                                                  const std::vector<int>& counts,
+                                                  TargetBranches* branches) {
+  TargetBranches taken;
   const Lattice lattice = c.lattice();
   const auto q = curve_q(lattice);
   const auto& nbrs = lattice.nbrs(u);
@@ -32,12 +34,15 @@ std::vector<std::optional<Point>> compute_targets(const VlConfig& c, RegionId u,
     view.neighbours.push_back(
         {static_cast<mc::RegionId>(nbrs[i]), counts.at(i), q[static_cast<std::size_t>(nbrs[i])]});
   const mc::AssignResult plan = mc::assign(view, mc::AssignParams(c.k, c.rho2));
+  taken.assign = plan.branch;
+  taken.reassigned = plan.total_sent() > 0;
 
   std::vector<std::optional<Point>> target(reported.size());
   std::size_t next = 0; // lowest ids first (line 11)
   for (std::size_t i = 0; i < nbrs.size(); ++i)
     for (mc::RobotCount sent = 0; sent < plan.sent[i]; ++sent)
       target[static_cast<std::size_t>(members[next++])] = lattice.centre(nbrs[i]); // line 31
+  taken.to_centre = static_cast<int>(next);
 
   const bool on_curve_region = q[static_cast<std::size_t>(u)] != 0;
   // P_u = [inf, sup] on the lattice; with owned_ends (D14) only the points u owns: the
@@ -50,13 +55,16 @@ std::vector<std::optional<Point>> compute_targets(const VlConfig& c, RegionId u,
     const int p = members[i];
     const Point at = *reported[static_cast<std::size_t>(p)];
     const int x = lattice.x_of(at), y = lattice.y_of(at);
-    if (!on_curve_region)
+    if (!on_curve_region) {
       target[static_cast<std::size_t>(p)] = at; // Γ_u = ∅: keeps its position
-    else if (y != curve_y || x < inf || x > sup)
+      ++taken.stays;
+    } else if (y != curve_y || x < inf || x > sup) {
       target[static_cast<std::size_t>(p)] =
           lattice.point(std::clamp(x, inf, sup), curve_y); // line 33
-    else
+      ++taken.onto_curve;
+    } else {
       seq.emplace_back(x, p);
+    }
   }
   std::sort(seq.begin(), seq.end());
   std::vector<mc::Rational> sorted;
@@ -67,6 +75,11 @@ std::vector<std::optional<Point>> compute_targets(const VlConfig& c, RegionId u,
     const int x = mc::floor_of(moved[i]).convert_to<int>();
     target[static_cast<std::size_t>(seq[i].second)] = lattice.point(x, curve_y); // lines 35–38
   }
+  // The first and the last of seq take lines 35–36 (one robot alone is the first).
+  taken.to_end = static_cast<int>(std::min<std::size_t>(seq.size(), 2));
+  taken.between = static_cast<int>(seq.size()) - taken.to_end;
+  if (branches)
+    *branches = taken;
   return target;
 }
 

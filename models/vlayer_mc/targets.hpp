@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "models/mc/assign.hpp"
+#include "models/vlayer_mc/branch_tally.hpp"
 #include "models/vlayer_mc/config.hpp"
 
 namespace vlayer_mc {
@@ -26,9 +27,11 @@ namespace vlayer_mc {
 std::vector<mc::QuantisedLength> curve_q(const Lattice& lattice);
 
 // reported[p]: M_u(p) (nullopt: p ∉ dom M_u); counts[i]: V_u(nbrs(u)[i]).
-// Returns the target of every p ∈ dom M_u (nullopt for the others).
+// Returns the target of every p ∈ dom M_u (nullopt for the others); `branches`, when given,
+// says which branches of Fig. 7 gave them.
 std::vector<std::optional<Point>> compute_targets(const VlConfig& config, RegionId u,
                                                   const std::vector<std::optional<Point>>& reported,
-                                                  const std::vector<int>& counts);
+                                                  const std::vector<int>& counts,
+                                                  TargetBranches* branches = nullptr);
 
 } // namespace vlayer_mc

@@ -64,10 +64,21 @@ EnvironmentStates environment_states(const tioa::Automaton& env, std::uint64_t l
 
 } // namespace
 
+std::string faults_note(const Faults& faults) {
+  if (!faults.robots && !faults.vsas)
+    return "no failure or restart after t0 = 0; failed flags start arbitrary (D13)";
+  const std::string who = faults.robots && faults.vsas ? "robots and VSAs"
+                          : faults.robots              ? "robots"
+                                                       : "VSAs";
+  return "failures and restarts after t0: " + who +
+         " fail and restart at any time (robot_faults/vsa_faults); the lemma assumes none "
+         "after t0 (seed 000 line 772, D13), so a late failure may break its bound";
+}
+
 UStarts u_starts(const VlConfig& c, const ArbitraryStarts& a,
                  const checker::ExploreOptions& options) {
-  UStarts u{vlayer(c, after_t0), {}, false, 0, 0, "", {}};
-  const tioa::Automaton env = environment(c, after_t0);
+  UStarts u{vlayer(c, a.faults), {}, false, 0, 0, "", {}};
+  const tioa::Automaton env = environment(c, a.faults);
   const EnvironmentStates reach = environment_states(env, a.environment_limit, a, c.delta, options);
   u.environment_states = reach.states.size();
 

@@ -42,7 +42,7 @@ bool may_reduce(const checker::Property& p) {
 
 TEST_CASE("the suite's invariants and time-locks: the same verdicts with and without --por",
           "[catalogue][por]") {
-  int compared = 0;
+  int compared = 0, too_large = 0;
   for (const auto& definition : catalogue::builtin_models().models())
     for (const auto& entry : definition.suite) {
       std::vector<std::string> settings;
@@ -57,7 +57,14 @@ TEST_CASE("the suite's invariants and time-locks: the same verdicts with and wit
         INFO(definition.name << " " << p.name);
         checker::ExploreOptions off, on;
         on.por = true;
+        // The full graphs of vlayer-mc's five-robot entries are far larger than this: for
+        // them there is nothing to compare with (the registry's suite test runs them reduced).
+        off.limits.max_states = 300'000;
         const checker::PropertyResult full = checker::run_property(instance.system, p, off);
+        if (full.message.find("state limit reached") != std::string::npos) {
+          ++too_large;
+          continue;
+        }
         const checker::PropertyResult reduced = checker::run_property(instance.system, p, on);
         CHECK(reduced.verdict == full.verdict);
         CHECK(reduced.verdict == entry.expected);
@@ -73,6 +80,7 @@ TEST_CASE("the suite's invariants and time-locks: the same verdicts with and wit
       }
     }
   CHECK(compared >= 4);
+  CHECK(too_large <= 2); // the two five-robot entries at most
 }
 
 // [slow]: over 10 s under the sanitizers (tools/run-tests.sh skips it there).

@@ -60,6 +60,23 @@ TEST_CASE("vlayer-mc lemma-7.3 on 1x1, repaired: in L1MC from time 2 on every sa
   CHECK(r.trace_role == "witness");
 }
 
+// Failures after t0 (issue 15), outside the lemma's hypothesis: robots fail and restart at
+// any time. On 1×1, repaired, every sample still meets the bound; the note says what ran.
+TEST_CASE("vlayer-mc lemma-7.3 on 1x1 with robot failures after t0", "[vlayer]") {
+  const std::vector<std::string> repaired{"cols=1", "cn_repair=1", "vn_repair=1", "samples=100"};
+  std::vector<std::string> failing = repaired;
+  failing.push_back("robot_faults=1");
+  const auto r = run_stabilisation("lemma-7.3", failing).result;
+  CHECK(r.verdict == checker::Verdict::incomplete);
+  CHECK(r.worst_time == 2u);
+  CHECK(vl_test::has_note(r, "failures and restarts after t0: robots fail and restart"));
+  CHECK_FALSE(vl_test::has_note(r, "no failure or restart after t0"));
+  // The failures are steps of the runs: the same samples reach more states.
+  const auto without = run_stabilisation("lemma-7.3", repaired).result;
+  CHECK(vl_test::has_note(without, "no failure or restart after t0"));
+  CHECK(r.states > without.states);
+}
+
 // Finding F5: on 1×2 a junk target-update (in R(Vbcast), or from a VSA whose clock was
 // wrong) moves the robot into the next region before the (4c) window opens, so it is outside
 // L1MC at time 2 = ε_sample + 1: a real counterexample. With filter_targets (D28) the CN

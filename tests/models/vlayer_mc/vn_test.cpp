@@ -55,6 +55,34 @@ TEST_CASE("vlayer targets: the boundary reassigns to o_g (Fig. 7 lines 19–22, 
         Targets{l.centre(0), l.centre(1), l.point(1, 4)});
 }
 
+TEST_CASE("vlayer targets: which branches of Fig. 7 a computation took", "[vlayer]") {
+  vlayer_mc::VlConfig c; // 1×2, b 2: Γ_0 is x ∈ [0, 2] on y = 1
+  c.robots = 5;
+  const vlayer_mc::Lattice l = c.lattice();
+  // Five robots at (0, 2) in region 0, none in region 1: ⌊0.9·5/4⌋ = 1 to o_1 (robot 0,
+  // lines 7–12, 30–31); the four others are off Γ_0 and go to its nearest point (32–33).
+  const vlayer_mc::Point corner = l.point(0, 2);
+  vlayer_mc::TargetBranches b;
+  const Targets t =
+      vlayer_mc::compute_targets(c, 0, {corner, corner, corner, corner, corner}, {0}, &b);
+  CHECK(t[0] == l.centre(1));
+  CHECK(t[1] == l.point(0, 1));
+  CHECK(b.assign == mc::AssignBranch::on_curve);
+  CHECK(b.reassigned);
+  CHECK(b.to_centre == 1);
+  CHECK(b.onto_curve == 4);
+  CHECK(b.to_end + b.between + b.stays == 0);
+  // Four robots on Γ_0: ⌊0.9·4/4⌋ = 0, none sent; two ends, two between (lines 35–38).
+  const Targets on = vlayer_mc::compute_targets(
+      c, 0, {l.point(0, 1), l.point(1, 1), l.point(1, 1), l.point(2, 1), {}}, {0}, &b);
+  CHECK(on[0] == l.point(0, 1));
+  CHECK(b.assign == mc::AssignBranch::on_curve);
+  CHECK_FALSE(b.reassigned);
+  CHECK(b.to_centre == 0);
+  CHECK(b.to_end == 2);
+  CHECK(b.between == 2);
+}
+
 TEST_CASE("vlayer targets: the memo gives compute_targets' answer, computed once", "[vlayer]") {
   vlayer_mc::VlConfig c;
   c.rows = 2;
