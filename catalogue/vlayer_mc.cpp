@@ -35,38 +35,17 @@ void add_fig7_figures(const vlayer_mc::BranchCounts& n, checker::PropertyResult&
   figure("Fig. 7 robots off the curve staying", n.stays);
 }
 
-// The computations every rank of a distributed run recorded, on every rank: each rank sends
-// its records as 32-bit words (u, key size, key, then the branches).
+// The computations every rank of a distributed run recorded, on every rank.
 std::vector<vlayer_mc::BranchRecord> gathered(checker::Collective& ranks,
                                               const std::vector<vlayer_mc::BranchRecord>& mine) {
-  std::vector<std::int32_t> words;
-  for (const vlayer_mc::BranchRecord& r : mine) {
-    words.push_back(r.u);
-    words.push_back(static_cast<std::int32_t>(r.key.size()));
-    words.insert(words.end(), r.key.begin(), r.key.end());
-    const vlayer_mc::TargetBranches& b = r.branches;
-    words.insert(words.end(), {static_cast<std::int32_t>(b.assign), b.reassigned ? 1 : 0,
-                               b.to_centre, b.onto_curve, b.to_end, b.between, b.stays});
-  }
+  const std::vector<std::int32_t> words = vlayer_mc::encode(mine);
   std::vector<std::uint8_t> bytes;
   checker::append_bytes(bytes, words.data(), words.size() * sizeof(std::int32_t));
   std::vector<std::uint64_t> sizes;
   const std::vector<std::uint8_t> all = ranks.all_gather(bytes, sizes);
   std::vector<std::int32_t> in(all.size() / sizeof(std::int32_t));
   std::memcpy(in.data(), all.data(), in.size() * sizeof(std::int32_t));
-  std::vector<vlayer_mc::BranchRecord> records;
-  for (std::size_t at = 0; at < in.size();) {
-    vlayer_mc::BranchRecord r;
-    r.u = in[at];
-    const auto size = static_cast<std::size_t>(in[at + 1]);
-    r.key.assign(in.begin() + static_cast<std::ptrdiff_t>(at + 2),
-                 in.begin() + static_cast<std::ptrdiff_t>(at + 2 + size));
-    const std::int32_t* b = in.data() + at + 2 + size;
-    r.branches = {static_cast<mc::AssignBranch>(b[0]), b[1] != 0, b[2], b[3], b[4], b[5], b[6]};
-    records.push_back(std::move(r));
-    at += 2 + size + 7;
-  }
-  return records;
+  return vlayer_mc::decode(in);
 }
 
 // `property` counting, in an epoch of its own, the branches of Fig. 7 its explorations

@@ -61,4 +61,36 @@ BranchCounts sum_distinct(std::vector<BranchRecord> records) {
   return n;
 }
 
+std::vector<std::int32_t> encode(const std::vector<BranchRecord>& records) {
+  std::vector<std::int32_t> words;
+  for (const BranchRecord& r : records) {
+    words.push_back(r.u);
+    words.push_back(static_cast<std::int32_t>(r.key.size()));
+    words.insert(words.end(), r.key.begin(), r.key.end());
+    const TargetBranches& b = r.branches;
+    words.insert(words.end(), {static_cast<std::int32_t>(b.assign), b.reassigned ? 1 : 0,
+                               b.to_centre, b.onto_curve, b.to_end, b.between, b.stays});
+  }
+  return words;
+}
+
+std::vector<BranchRecord> decode(const std::vector<std::int32_t>& words) {
+  constexpr std::size_t branch_words = 7;
+  std::vector<BranchRecord> records;
+  for (std::size_t at = 0; at + 2 <= words.size();) {
+    BranchRecord r;
+    r.u = words[at];
+    const auto size = static_cast<std::size_t>(words[at + 1]);
+    if (at + 2 + size + branch_words > words.size())
+      break; // cut short: never from encode
+    const auto first = words.begin() + static_cast<std::ptrdiff_t>(at + 2);
+    r.key.assign(first, first + static_cast<std::ptrdiff_t>(size));
+    const std::int32_t* b = words.data() + at + 2 + size;
+    r.branches = {static_cast<mc::AssignBranch>(b[0]), b[1] != 0, b[2], b[3], b[4], b[5], b[6]};
+    records.push_back(std::move(r));
+    at += 2 + size + branch_words;
+  }
+  return records;
+}
+
 } // namespace vlayer_mc

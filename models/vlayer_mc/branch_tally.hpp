@@ -70,4 +70,10 @@ private:
 // The counts of the distinct computations among `records` (by u and key).
 BranchCounts sum_distinct(std::vector<BranchRecord> records);
 
+// Records as 32-bit words, to send to other processes (u, key size, key, the branches),
+// and back: decode(encode(r)) == r, and decode of the words of several lists one after
+// the other gives the records of all of them.
+std::vector<std::int32_t> encode(const std::vector<BranchRecord>& records);
+std::vector<BranchRecord> decode(const std::vector<std::int32_t>& words);
+
 } // namespace vlayer_mc

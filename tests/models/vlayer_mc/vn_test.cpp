@@ -2,6 +2,9 @@
 // (assign and calctarget on the lattice).
 #include <catch2/catch.hpp>
 
+#include <atomic>
+
+#include "models/vlayer_mc/branch_tally.hpp"
 #include "models/vlayer_mc/target_memo.hpp"
 #include "models/vlayer_mc/targets.hpp"
 #include "models/vlayer_mc/vn.hpp"
@@ -81,6 +84,38 @@ TEST_CASE("vlayer targets: which branches of Fig. 7 a computation took", "[vlaye
   CHECK(b.to_centre == 0);
   CHECK(b.to_end == 2);
   CHECK(b.between == 2);
+}
+
+TEST_CASE("vlayer branch tally: distinct computations per epoch, over processes", "[vlayer]") {
+  vlayer_mc::BranchTally tally;
+  tally.start_epoch();
+  std::atomic<std::uint32_t> first{0}, second{0};
+  vlayer_mc::TargetBranches sent;
+  sent.assign = mc::AssignBranch::boundary;
+  sent.reassigned = true;
+  sent.to_centre = 1;
+  tally.count(2, {5, -1, 0}, sent, first);
+  tally.count(2, {5, -1, 0}, sent, first); // the same entry: counted once
+  tally.count(0, {7, 7, 1}, {}, second);
+  CHECK(tally.counts().computations == 2);
+  CHECK(tally.counts().boundary == 1);
+  CHECK(tally.counts().to_centre == 1);
+  // Another process made the first computation too: the gathered records count it once.
+  std::vector<vlayer_mc::BranchRecord> both = tally.records();
+  const std::vector<vlayer_mc::BranchRecord> other{{2, {5, -1, 0}, sent}};
+  std::vector<std::int32_t> words = vlayer_mc::encode(both);
+  const std::vector<std::int32_t> more = vlayer_mc::encode(other);
+  words.insert(words.end(), more.begin(), more.end());
+  const std::vector<vlayer_mc::BranchRecord> decoded = vlayer_mc::decode(words);
+  REQUIRE(decoded.size() == 3);
+  CHECK(decoded[2].key == std::vector<std::int32_t>{5, -1, 0});
+  CHECK(decoded[2].branches.assign == mc::AssignBranch::boundary);
+  CHECK(vlayer_mc::sum_distinct(decoded).computations == 2);
+  // A new epoch counts again.
+  tally.start_epoch();
+  CHECK(tally.counts().computations == 0);
+  tally.count(2, {5, -1, 0}, sent, first);
+  CHECK(tally.counts().computations == 1);
 }
 
 TEST_CASE("vlayer targets: the memo gives compute_targets' answer, computed once", "[vlayer]") {
