@@ -87,6 +87,8 @@ vlayer_mc::VlConfig vlayer_config(const ParamValues& p) {
   c.vn_repair = whole(p, "vn_repair") == 1;
   c.owned_ends = whole(p, "owned_ends") == 1;
   c.filter_targets = whole(p, "filter_targets") == 1;
+  c.place =
+      p.at("place").text() == "corner" ? vlayer_mc::Placement::corner : vlayer_mc::Placement::row;
   return c;
 }
 
@@ -168,27 +170,15 @@ ModelDefinition vlayer_mc_definition() {
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     if (p.at("nbh") != 4 && p.at("nbh") != 8)
       return "nbh must be 4 or 8, not " + p.at("nbh").text();
-    const vlayer_mc::VlConfig c = vlayer_config(p);
-    if (const auto why = vlayer_mc::invalid(c))
-      return why;
-    if (p.at("place").text() == "row" && c.robots > c.lattice().width())
-      return "place=row puts robot p at x = p: " + std::to_string(c.robots) +
-             " robots need a lattice " + std::to_string(c.robots) + " points wide, this one has " +
-             std::to_string(c.lattice().width()) + " (place=corner, or a larger cols or b)";
-    return std::nullopt;
+    return vlayer_mc::invalid(vlayer_config(p));
   };
   d.build = [](const ParamValues& p) {
     vlayer_mc::VlConfig c = vlayer_config(p);
     c.branch_tally = std::make_shared<vlayer_mc::BranchTally>();
-    const vlayer_mc::Lattice lattice = c.lattice();
     const vlayer_mc::Faults faults{.robots = p.at("robot_faults") == 1,
                                    .vsas = p.at("vsa_faults") == 1};
     const tioa::Automaton layer = vlayer_mc::vlayer(c, faults);
-    // y = rows·b: the lattice's last row (drawn at the bottom), off the curve (row 0, y = b/2).
-    const bool corner = p.at("place").text() == "corner";
-    std::vector<vlayer_mc::Point> at;
-    for (int robot = 0; robot < c.robots; ++robot)
-      at.push_back(lattice.point(corner ? 0 : robot, lattice.height() - 1));
+    const std::vector<vlayer_mc::Point> at = vlayer_mc::start_points(c);
     const auto window = p.at("window").text() == "closed" ? vlayer_mc::MWindow::closed
                                                           : vlayer_mc::MWindow::as_printed;
     ModelInstance m{tioa::Start(layer, vlayer_mc::placed_start(layer, at)), {}, "1 time unit"};

@@ -18,13 +18,9 @@ namespace {
 
 using checker::PropertyResult;
 
-// The robots at the bottom-left corner, nothing failed: the instance of the other properties.
+// The robots at their start points, nothing failed: the instance of the other properties.
 tioa::Automaton placed_instance(const VlConfig& c, const tioa::Automaton& layer) {
-  const Lattice lattice = c.lattice();
-  std::vector<Point> at;
-  for (int robot = 0; robot < c.robots; ++robot)
-    at.push_back(lattice.point(robot, lattice.height() - 1));
-  return tioa::Start(layer, placed_start(layer, at));
+  return tioa::Start(layer, placed_start(layer, start_points(c)));
 }
 
 } // namespace

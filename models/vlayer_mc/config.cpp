@@ -30,6 +30,11 @@ std::optional<std::string> invalid(const VlConfig& c) {
     return "k must be >= 1";
   if (c.rho1 <= 0 || c.rho1 >= 1 || c.rho2 <= 0 || c.rho2 >= 1)
     return "rho1 and rho2 must lie in (0, 1)";
+  // Last: the lattice needs the values above.
+  if (c.place == Placement::row && c.robots > c.lattice().width())
+    return "place=row puts robot p at x = p: " + std::to_string(c.robots) +
+           " robots need a lattice " + std::to_string(c.robots) + " points wide, this one has " +
+           std::to_string(c.lattice().width()) + " (place=corner, or a larger cols or b)";
   return std::nullopt;
 }
 

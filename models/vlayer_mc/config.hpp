@@ -13,6 +13,13 @@ namespace vlayer_mc {
 
 class BranchTally;
 
+// Where the robots start (the instance's start state; the lemmas of §7.2 start anywhere):
+// `row` robot p at (p, rows·b), the lattice's last row (drawn at the bottom), off the curve;
+// `corner` every robot at (0, rows·b). Robots are points, and nothing in RW, CN or VN keeps
+// two apart, so a common point is one of the paper's start states: the smallest lattice on
+// which 5 robots share a region (issue 15, README "Where each branch of Fig. 7 acts").
+enum class Placement { row, corner };
+
 struct VlConfig {
   int rows = 1, cols = 2;
   mc::Neighbourhood nbh = mc::Neighbourhood::four;
@@ -22,6 +29,7 @@ struct VlConfig {
   int delta = 6, d = 1, e = 0, eps = 0, eps_sample = 1, d_r = 1, vmax = 4;
   int k = 1;
   mc::Rational rho1{1, 2}, rho2{9, 10};
+  Placement place = Placement::row;
   // Changes to the paper's CN and VN, each off by default (the paper's reconstruction) and
   // each a no-op on every state reachable without failures (README "Self-stabilising CN and
   // VN"). The first runs of lemma-7.3 led to them.

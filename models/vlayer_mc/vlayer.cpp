@@ -55,6 +55,14 @@ tioa::Automaton vlayer(const VlConfig& c, Faults faults) {
   return tioa::compose("VLayer", parts);
 }
 
+std::vector<Point> start_points(const VlConfig& c) {
+  const Lattice lattice = c.lattice();
+  std::vector<Point> at;
+  for (int robot = 0; robot < c.robots; ++robot)
+    at.push_back(lattice.point(c.place == Placement::corner ? 0 : robot, lattice.height() - 1));
+  return at;
+}
+
 tioa::StartSet placed_start(const tioa::Automaton& layer, const std::vector<Point>& locations) {
   std::vector<tioa::Word> words(layer.words() + 1, 0);
   tioa::State s(words.data(), 0);

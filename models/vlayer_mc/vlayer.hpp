@@ -41,4 +41,7 @@ tioa::Automaton vlayer(const VlConfig& config, Faults faults = {});
 // set of Fail(...) itself would visit every valuation of the failed nodes.
 tioa::StartSet placed_start(const tioa::Automaton& layer, const std::vector<Point>& locations);
 
+// The robots' start points of the instance (VlConfig::place).
+std::vector<Point> start_points(const VlConfig& config);
+
 } // namespace vlayer_mc

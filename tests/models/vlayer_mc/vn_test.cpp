@@ -184,3 +184,18 @@ TEST_CASE("vlayer VN: collect, vn-update at e+d+eps, targets at e+2d+2eps", "[vl
   s = after(vn, s, "vcast_target_update_0(0,5)");
   CHECK(has(steps(vn, s), "tick"));
 }
+
+TEST_CASE("vlayer start points: a row on the lattice's last row, or one corner", "[vlayer]") {
+  vlayer_mc::VlConfig c; // 1×2, b 2: the lattice is 5 × 3, its last row y = 2
+  c.robots = 3;
+  const vlayer_mc::Lattice l = c.lattice();
+  CHECK(vlayer_mc::start_points(c) ==
+        std::vector<vlayer_mc::Point>{l.point(0, 2), l.point(1, 2), l.point(2, 2)});
+  c.place = vlayer_mc::Placement::corner;
+  c.robots = 6; // more than the lattice is wide: only the corner holds them
+  CHECK(vlayer_mc::start_points(c) == std::vector<vlayer_mc::Point>(6, l.point(0, 2)));
+  CHECK_FALSE(vlayer_mc::invalid(c));
+  c.place = vlayer_mc::Placement::row;
+  REQUIRE(vlayer_mc::invalid(c));
+  CHECK_THAT(*vlayer_mc::invalid(c), Catch::StartsWith("place=row puts robot p at x = p"));
+}
