@@ -86,6 +86,7 @@ vlayer_mc::VlConfig vlayer_config(const ParamValues& p) {
   c.cn_repair = whole(p, "cn_repair") == 1;
   c.vn_repair = whole(p, "vn_repair") == 1;
   c.owned_ends = whole(p, "owned_ends") == 1;
+  c.dr_rule = whole(p, "dr_rule") == 1;
   c.filter_targets = whole(p, "filter_targets") == 1;
   c.place =
       p.at("place").text() == "corner" ? vlayer_mc::Placement::corner : vlayer_mc::Placement::row;
@@ -126,6 +127,9 @@ ModelDefinition vlayer_mc_definition() {
       {"vsa_faults", 0, 0, 1,
        "1: VW fails and restarts VSAs at any time (Fail(VN_u)), in the lemmas of §7.2 after t0 "
        "too"},
+      {"dr_rule", 0, 0, 1,
+       "1: the d_r rule of seed 000 line 1177: VW keeps VN_u alive while a live client has "
+       "been in u for d_r, and restarts it then (README D32)"},
       catalogue::ParamSpec::change(
           "cn_repair", "1: a GPSupdate that finds a CN's view wrong resets its velocity and "
                        "target (README D25; the paper's CN records position and time only)"),
@@ -142,6 +146,9 @@ ModelDefinition vlayer_mc_definition() {
        "lemma-7.3/7.4, theorem-7.5: start states drawn from U(VLNodes) x R(env) when there are "
        "more than 2 000 000 of them"},
       {"seed", 1, 0, 1000000000, "seed of that draw"},
+      {"junk", 2, 0, 3,
+       "lemma-7.3/7.4, theorem-7.5: messages of any kind and id U(VLNodes) may leave in each "
+       "client's VBDelay, and VBcast hold on their way (README D31)"},
       catalogue::ParamSpec::choice("rmc", "loose", {"loose", "strict", "loose-reg"},
                                    "lemma-7.6/7.7: the reading of R_MC's unprinted parts (README "
                                    "D19-D21, finding F4)"),
@@ -191,7 +198,8 @@ ModelDefinition vlayer_mc_definition() {
     const vlayer_mc::ArbitraryStarts starts{
         .samples = static_cast<std::uint64_t>(p.at("samples").integer()),
         .seed = static_cast<std::uint64_t>(p.at("seed").integer()),
-        .faults = faults};
+        .faults = faults,
+        .junk = static_cast<int>(p.at("junk").integer())};
     checker::Property no_timelock =
         custom_property("no-timelock", "every reachable state has an action or a tick",
                         [=](const checker::ExploreOptions& o) {

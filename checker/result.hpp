@@ -3,12 +3,14 @@
 // trace (a counterexample, or a witness of the worst case).
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "checker/trace.hpp"
+#include "tioa/automaton.hpp"
 
 namespace checker {
 
@@ -58,6 +60,13 @@ struct PropertyResult {
   std::optional<std::uint64_t> last_time_outside;
 
   std::optional<Trace> trace;
+  // The automaton whose states and steps the trace is made of, when the check explored
+  // another one than the model's system (vlayer-mc's arbitrary start states have junk
+  // slots, D31); null: the system. Reports render the trace with trace_layout_or().
+  std::shared_ptr<const tioa::Automaton> trace_system;
+  const tioa::StateLayout& trace_layout_or(const tioa::StateLayout& system) const {
+    return trace_system ? trace_system->layout() : system;
+  }
   std::string trace_role; // "counterexample" or "witness"
   std::string trace_kind; // invariant, lasso, deadlock, time-lock, closure-step, worst-case
   // For a property with a legal set L (stabilisation, transitivity: L2, legal-set): its

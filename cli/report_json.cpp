@@ -73,8 +73,9 @@ Json action_json(const checker::TraceStep& step) {
   return out;
 }
 
-Json trace_json(const tioa::StateLayout& layout, const checker::PropertyResult& result) {
+Json trace_json(const tioa::StateLayout& system_layout, const checker::PropertyResult& result) {
   const checker::Trace& trace = *result.trace;
+  const tioa::StateLayout& layout = result.trace_layout_or(system_layout);
   Json steps = Json::array();
   const auto& variables = layout.variables();
   const bool marked = result.trace_in_legal_set.size() == trace.steps.size();

@@ -140,7 +140,7 @@ void print_property_block(std::ostream& out, const ModelRun& run, const checker:
                      trace_json(run.layout, r).dump(2, ' ', false, Json::error_handler_t::replace),
                      "     ");
     else
-      print_trace(out, run.layout, *r.trace, "     ");
+      print_trace(out, r.trace_layout_or(run.layout), *r.trace, "     ");
   }
 }
 

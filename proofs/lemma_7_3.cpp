@@ -1,6 +1,7 @@
 #include "proofs/lemma_7_3.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "checker/checks.hpp"
@@ -49,7 +50,10 @@ PropertyResult check_lemma_7_3(const VlConfig& c, MWindow window, const Arbitrar
   r.coverage = u.coverage;
   r.notes.push_back("the bound: time t > eps_sample = " + std::to_string(c.eps_sample) +
                     " is, in whole quanta, t = eps_sample + 1");
-  r.notes.push_back(faults_note(starts.faults));
+  r.notes.push_back(faults_note(starts.faults, c.dr_rule));
+  r.notes.push_back(junk_note(starts.junk));
+  // Its trace is one of u.layer, which has junk slots (D31).
+  r.trace_system = std::make_shared<const tioa::Automaton>(u.layer);
   note_repairs(c, r);
   note_round_length(c, r);
   return r;

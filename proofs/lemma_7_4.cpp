@@ -1,6 +1,7 @@
 #include "proofs/lemma_7_4.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -68,7 +69,10 @@ PropertyResult check_lemma_7_4(const VlConfig& c, MWindow window, const Arbitrar
                      " (duplicates counted once by the exploration), not all of L1MC: its " +
                      "valuations are too many to enumerate");
   r.notes.push_back(lmc_measure_note);
-  r.notes.push_back(faults_note(starts.faults));
+  r.notes.push_back(faults_note(starts.faults, c.dr_rule));
+  r.notes.push_back(junk_note(starts.junk));
+  // Its trace is one of u.layer, which has junk slots (D31).
+  r.trace_system = std::make_shared<const tioa::Automaton>(u.layer);
   note_repairs(c, r);
   note_round_length(c, r);
   return r;

@@ -1,6 +1,7 @@
 #include "proofs/theorem_7_5.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "checker/checks.hpp"
@@ -64,7 +65,10 @@ PropertyResult check_theorem_7_5(const VlConfig& c, MWindow window, const Arbitr
   r.seconds = first.seconds + second.seconds + direct.seconds;
   r.figures.emplace_back("known LMC", describe_known(known));
   r.notes.push_back(lmc_measure_note);
-  r.notes.push_back(faults_note(starts.faults));
+  r.notes.push_back(faults_note(starts.faults, c.dr_rule));
+  r.notes.push_back(junk_note(starts.junk));
+  // Its trace is one of u.layer, which has junk slots (D31).
+  r.trace_system = std::make_shared<const tioa::Automaton>(u.layer);
   note_repairs(c, r);
   note_round_length(c, r);
   return r;

@@ -26,6 +26,8 @@ std::optional<std::string> invalid(const VlConfig& c) {
     return "the target phase e + 2d + 2eps must fall inside the round (< delta)";
   if (c.eps_sample >= c.delta)
     return "eps_sample must be < delta";
+  if (c.junk < 0 || c.junk > 3)
+    return "junk must be 0..3";
   if (c.k < 1)
     return "k must be >= 1";
   if (c.rho1 <= 0 || c.rho1 >= 1 || c.rho2 <= 0 || c.rho2 >= 1)

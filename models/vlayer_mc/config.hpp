@@ -49,6 +49,17 @@ struct VlConfig {
   // VN. With owned_ends, P_u is the part of Γ_u that u owns (up to sup P_u − 1 on the
   // lattice), for lines 33 and 35–38.
   bool owned_ends = false;
+  // D32, the d_r rule (seed 000 lines 1176–1178, a guarantee of the VSA layer's emulation):
+  // VW never fails VN_u while a live client has been in u for d_r with no live client
+  // failing in u or leaving it, and restarts VN_u when that begins. Off: VW fails and
+  // restarts VSAs as Def 4.1 lets it (with vsa_faults), the rule not enforced.
+  bool dr_rule = false;
+  // D31: the capacity of the junk slots of each client's VBDelay (the messages of any kind
+  // and id that U(VLNodes) may leave in it) and of VBcast (those messages on their way).
+  // No step fills an empty junk slot, so on every state reachable from a state without junk
+  // they stay empty: only the automata of the arbitrary start states have them
+  // (proofs/vlayer_mc/arbitrary_starts.hpp, the parameter `junk`); 0 leaves them out.
+  int junk = 0;
   // Not a parameter: where VN_u's compute steps count the branches of Fig. 7 they take
   // (branch_tally.hpp); null counts nowhere. Every automaton built from this config shares
   // it.

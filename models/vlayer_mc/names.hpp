@@ -26,6 +26,11 @@ inline std::string vcast_cn_update(int p) {
 inline std::string vcast_prime_cn_update(int p) {
   return indexed("vcast'_cn_update", p);
 }
+// VBDelay_p → VBcast: vcast′(m)_p of a message U(VLNodes) left in the buffer (D31), with
+// parameters (slot, kind, id, value) of models/vlayer_mc/junk.hpp.
+inline std::string vcast_prime_junk(int p) {
+  return indexed("vcast'_junk", p);
+}
 // VBcast → CN_p: vrcv(⟨target-update, u, x*⟩)_p (D6: one entry per message).
 inline std::string vrcv_target_update(int p) {
   return indexed("vrcv_target_update", p);

@@ -40,8 +40,21 @@ ClauseCheck reset_mc_clauses(const VlConfig& c, const tioa::Automaton& layer, MW
                        need_slot(layer, cn + ".cn.x", "ResetMC"),
                        need_slot(layer, cn + ".cn.target", "ResetMC"),
                        need_slot(layer, cn + ".cn.v", "ResetMC")});
+    // D31: the junk slots of the client's VBDelay are part of to_send_p^−.
+    for (int j = 0;; ++j) {
+      const auto kind = find_slot(layer, cn + ".delay.junk_kind[" + std::to_string(j) + "]");
+      if (!kind)
+        break;
+      clients.back().empty.push_back(*kind);
+    }
     gps_age.push_back(need_slot(layer, "RW.gps_age" + id, "ResetMC"));
     pending.push_back(need_slot(layer, "VBcast.cn_pending" + id, "ResetMC"));
+  }
+  for (int i = 0;; ++i) {
+    const auto to = find_slot(layer, "VBcast.junk_to[" + std::to_string(i) + "]");
+    if (!to)
+      break;
+    pending.push_back(*to);
   }
   for (int u = 0; u < lattice.regions(); ++u) {
     const std::string vn = names::vn_name(u);
@@ -66,7 +79,7 @@ ClauseCheck reset_mc_clauses(const VlConfig& c, const tioa::Automaton& layer, MW
     for (const Node& cn : clients) {
       if (cn.failed && s.code(*cn.failed) != 0)
         continue;
-      bool ok = !sending(cn.empty.front());
+      bool ok = std::none_of(cn.empty.begin(), cn.empty.end(), sending);
       if (!is_bottom(s, *cn.x))
         ok = ok && !is_bottom(s, *cn.target) && !is_bottom(s, *cn.v) &&
              value(s, *cn.v) == zero_velocity;
@@ -108,13 +121,25 @@ tioa::StatePredicate reset_mc_or_targetless(const VlConfig& c, const tioa::Autom
   struct Client {
     std::string clause; // "(2) CN_p"
     tioa::Slot held, x, target, v, since;
+    std::vector<tioa::Slot> junk; // D31: the kinds of its VBDelay's junk slots
   };
   std::vector<Client> clients;
   for (int p = 0; p < c.robots; ++p) {
     const std::string cn = names::cn_name(p);
     const auto slot = [&](const std::string& name) { return need_slot(layer, cn + name, "D30"); };
-    clients.push_back({"(2) " + cn, slot(".delay.held"), slot(".cn.x"), slot(".cn.target"),
-                       slot(".cn.v"), slot(".cn.since")});
+    clients.push_back({"(2) " + cn,
+                       slot(".delay.held"),
+                       slot(".cn.x"),
+                       slot(".cn.target"),
+                       slot(".cn.v"),
+                       slot(".cn.since"),
+                       {}});
+    for (int j = 0;; ++j) {
+      const auto kind = find_slot(layer, cn + ".delay.junk_kind[" + std::to_string(j) + "]");
+      if (!kind)
+        break;
+      clients.back().junk.push_back(*kind);
+    }
   }
   return [=](const tioa::State& s) {
     for (const std::string& clause : clauses(s)) {
@@ -124,7 +149,9 @@ tioa::StatePredicate reset_mc_or_targetless(const VlConfig& c, const tioa::Autom
                                    [&](const Client& client) { return client.clause == clause; });
       if (cn == clients.end())
         return false;
-      const bool targetless = s.code(cn->held) == 0 && !is_bottom(s, cn->x) &&
+      const bool no_junk = std::all_of(cn->junk.begin(), cn->junk.end(),
+                                       [&](const tioa::Slot& kind) { return s.code(kind) == 0; });
+      const bool targetless = s.code(cn->held) == 0 && no_junk && !is_bottom(s, cn->x) &&
                               is_bottom(s, cn->target) && !is_bottom(s, cn->v) &&
                               value(s, cn->v) == zero_velocity && value(s, cn->since) >= 1;
       if (!targetless)

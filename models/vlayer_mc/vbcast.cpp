@@ -1,7 +1,9 @@
 #include "models/vlayer_mc/vbcast.hpp"
 
 #include <algorithm>
+#include <array>
 
+#include "models/vlayer_mc/junk.hpp"
 #include "models/vlayer_mc/names.hpp"
 
 namespace vlayer_mc {
@@ -29,6 +31,38 @@ tioa::Automaton vbcast(const VlConfig& c) {
   const auto tu_pending = a.booleans("tu_pending", regions * n, false);
   const auto tu_age = a.clocks("tu_age", regions * n, d, 0);
   const auto tu_target = a.integers("tu_target", regions * n, 0, points - 1, 0);
+  // D31: the junk a client's VBDelay hands over, slot j of client p at p·junk + j. `to` is
+  // the mask of receivers still to get it (junk::receivers), `from` the sender's region.
+  const int slots_per_client = c.junk, junk_slots = n * slots_per_client;
+  const auto j_kind = a.integers("junk_kind", junk_slots, 0, junk::kinds - 1, junk::empty);
+  const auto j_id = a.integers("junk_id", junk_slots, 0, junk::ids(c) - 1, 0);
+  const auto j_value = a.integers("junk_value", junk_slots, 0, junk::values(c) - 1, 0);
+  const auto j_from = a.integers("junk_from", junk_slots, 0, regions - 1, 0);
+  const auto j_to = a.integers("junk_to", junk_slots, 0, (1 << regions) - 1, 0);
+  const auto j_age = a.clocks("junk_age", junk_slots, d, 0);
+  // Empties junk slot i once its last receiver got the message.
+  const auto clear_junk = [=](State& s, int i) {
+    s[j_kind[i]] = junk::empty;
+    s[j_id[i]] = 0;
+    s[j_value[i]] = 0;
+    s[j_from[i]] = 0;
+    s[j_to[i]] = 0;
+    s[j_age[i]] = 0;
+  };
+  const auto junk_footprint = [=](tioa::Footprint& f) {
+    for (int i = 0; i < junk_slots; ++i)
+      f.reads(j_kind[i])
+          .reads(j_id[i])
+          .reads(j_value[i])
+          .reads(j_from[i])
+          .reads(j_to[i])
+          .writes(j_kind[i])
+          .writes(j_id[i])
+          .writes(j_value[i])
+          .writes(j_from[i])
+          .writes(j_to[i])
+          .writes(j_age[i]);
+  };
 
   for (int p = 0; p < n; ++p) {
     a.input(names::gps_update(p), {{"l", 0, points - 1}, {"t", 0, c.delta - 1}})
@@ -45,6 +79,38 @@ tioa::Automaton vbcast(const VlConfig& c) {
         .footprint([=](const Params& x, tioa::Footprint& f) {
           f.reads(reg[p]).writes(cn_pending[p]).sets(cn_age[p], 0).sets(cn_loc[p], x[0]);
         });
+    if (c.junk > 0)
+      a.input(names::vcast_prime_junk(p), {{"slot", 0, c.junk - 1},
+                                           {"kind", 1, junk::kinds - 1},
+                                           {"id", 0, junk::ids(c) - 1},
+                                           {"value", 0, junk::values(c) - 1}})
+          .eff([=](State& s, const Params& x) {
+            const int i = p * slots_per_client + x[0];
+            const auto region = [&](int q) -> std::optional<int> {
+              if (q >= n || s.is_bottom(reg[q]))
+                return std::nullopt;
+              return s[reg[q]];
+            };
+            const std::optional<int> from = region(p);
+            const int to = junk::receivers(lattice, n, x[1], x[2], x[3], from, region(x[2]));
+            // D12 as for the other slots: a message into a slot with pending receivers
+            // replaces it (only from arbitrary states of VBcast).
+            clear_junk(s, i);
+            if (to == 0)
+              return;
+            s[j_kind[i]] = x[1];
+            s[j_id[i]] = x[2];
+            s[j_value[i]] = x[3];
+            s[j_from[i]] = *from;
+            s[j_to[i]] = to;
+          })
+          .footprint([=](const Params& x, tioa::Footprint& f) {
+            const int i = p * slots_per_client + x[0];
+            for (const auto& r : reg.items)
+              f.reads(r);
+            f.writes(j_kind[i]).writes(j_id[i]).writes(j_value[i]).writes(j_from[i]);
+            f.writes(j_to[i]).sets(j_age[i], 0);
+          });
   }
   for (int u = 0; u < regions; ++u) {
     const auto& nbrs = lattice.nbrs(u);
@@ -72,67 +138,136 @@ tioa::Automaton vbcast(const VlConfig& c) {
   }
 
   // Deliveries. A slot whose last receiver got the message is reset to age 0.
+  //
+  // D31: with junk slots the same message may be pending for the same receiver in several
+  // slots (its own and junk ones). Each copy is a choice of the delivery (tioa's `choose`):
+  // the sender's own slot first, then the junk slots in order. Without junk slots the
+  // value a delivery carries is bound to its slot (tioa's `bind`).
+  const auto junk_match = [=](const State& s, int i, int kind, int id, int value, int from,
+                              int bit) {
+    return s[j_kind[i]] == kind && s[j_id[i]] == id && s[j_value[i]] == value &&
+           (from < 0 || s[j_from[i]] == from) && (s[j_to[i]] >> bit & 1) != 0;
+  };
+  const auto junk_count = [=](const State& s, int kind, int id, int value, int from, int bit) {
+    std::uint32_t count = 0;
+    for (int i = 0; i < junk_slots; ++i)
+      count += junk_match(s, i, kind, id, value, from, bit) ? 1 : 0;
+    return count;
+  };
+  // Delivers the k-th junk copy (in slot order) to the receiver `bit`.
+  const auto take_junk = [=](State& s, std::uint32_t k, int kind, int id, int value, int from,
+                             int bit) {
+    for (int i = 0; i < junk_slots; ++i)
+      if (junk_match(s, i, kind, id, value, from, bit) && k-- == 0) {
+        s[j_to[i]] = s[j_to[i]] & ~(1 << bit);
+        if (s[j_to[i]] == 0)
+          clear_junk(s, i);
+        return;
+      }
+  };
+  // The transition of delivery `b`: `own` is the copy in the sender's slot, `take_own`
+  // delivers it, `junk_key` gives (kind, id, value, from, bit) of the junk copies, `bound`
+  // binds parameter `param` when there are no junk slots.
+  const auto deliver = [=](tioa::TransitionBuilder b, tioa::Guard own, tioa::Effect take_own,
+                           auto junk_key, const std::string& param, tioa::Binder bound) {
+    if (junk_slots == 0) {
+      b.pre(own).bind(param, bound).eff(take_own);
+      return;
+    }
+    const auto copies = [=](const State& s, const Params& x) -> std::uint32_t {
+      const auto [kind, id, value, from, bit] = junk_key(x);
+      return (own(s, x) ? 1 : 0) + junk_count(s, kind, id, value, from, bit);
+    };
+    b.pre([=](const State& s, const Params& x) {
+       return copies(s, x) > 0;
+     }).choose(copies, [=](State& s, const Params& x, std::uint32_t k) {
+      if (own(s, x)) {
+        if (k == 0) {
+          take_own(s, x);
+          return;
+        }
+        --k;
+      }
+      const auto [kind, id, value, from, bit] = junk_key(x);
+      take_junk(s, k, kind, id, value, from, bit);
+    });
+  };
+  using Key = std::array<int, 5>;
   for (int v = 0; v < regions; ++v) {
-    a.output(names::vrcv_cn_update(v), {{"p", 0, n - 1}, {"l", 0, points - 1}})
-        .pre([=](const State& s, const Params& x) {
+    deliver(
+        a.output(names::vrcv_cn_update(v), {{"p", 0, n - 1}, {"l", 0, points - 1}})
+            .footprint([=](const Params& x, tioa::Footprint& f) {
+              f.reads(cn_pending[x[0]]).reads(cn_loc[x[0]]);
+              f.sets(cn_pending[x[0]], false).sets(cn_age[x[0]], 0);
+              junk_footprint(f);
+            }),
+        [=](const State& s, const Params& x) {
           return s[cn_pending[x[0]]] && s[cn_loc[x[0]]] == x[1] && lattice.region_of(x[1]) == v;
-        })
-        .bind("l",
-              [=](const State& s, const Params& x) -> std::optional<std::int32_t> {
-                return s[cn_loc[x[0]]];
-              })
-        .eff([=](State& s, const Params& x) {
+        },
+        [=](State& s, const Params& x) {
           s[cn_pending[x[0]]] = false;
           s[cn_age[x[0]]] = 0;
-        })
-        .footprint([=](const Params& x, tioa::Footprint& f) {
-          f.reads(cn_pending[x[0]]).reads(cn_loc[x[0]]);
-          f.sets(cn_pending[x[0]], false).sets(cn_age[x[0]], 0);
+        },
+        [=](const Params& x) {
+          return Key{junk::cn_update, x[0], x[1], -1, v};
+        },
+        "l",
+        [=](const State& s, const Params& x) -> std::optional<std::int32_t> {
+          return s[cn_loc[x[0]]];
         });
-    a.output(names::vrcv_vn_update(v), {{"g", 0, regions - 1}, {"n", 0, n}})
-        .pre([=](const State& s, const Params& x) {
+    deliver(
+        a.output(names::vrcv_vn_update(v), {{"g", 0, regions - 1}, {"n", 0, n}})
+            .footprint([=](const Params& x, tioa::Footprint& f) {
+              f.reads(vn_mask[x[0]]).reads(vn_count[x[0]]);
+              f.writes(vn_mask[x[0]]).sets(vn_age[x[0]], 0);
+              junk_footprint(f);
+            }),
+        [=](const State& s, const Params& x) {
           const auto& from = lattice.nbrs(x[0]);
           const auto at = std::find(from.begin(), from.end(), v);
           return at != from.end() && (s[vn_mask[x[0]]] >> (at - from.begin()) & 1) != 0 &&
                  s[vn_count[x[0]]] == x[1];
-        })
-        .bind("n",
-              [=](const State& s, const Params& x) -> std::optional<std::int32_t> {
-                return s[vn_count[x[0]]];
-              })
-        .eff([=](State& s, const Params& x) {
+        },
+        [=](State& s, const Params& x) {
           const auto& from = lattice.nbrs(x[0]);
           const auto bit = std::find(from.begin(), from.end(), v) - from.begin();
           s[vn_mask[x[0]]] = s[vn_mask[x[0]]] & ~(1 << bit);
           if (s[vn_mask[x[0]]] == 0)
             s[vn_age[x[0]]] = 0;
-        })
-        .footprint([=](const Params& x, tioa::Footprint& f) {
-          f.reads(vn_mask[x[0]]).reads(vn_count[x[0]]);
-          f.writes(vn_mask[x[0]]).sets(vn_age[x[0]], 0);
+        },
+        [=](const Params& x) {
+          return Key{junk::vn_update, x[0], x[1], -1, v};
+        },
+        "n",
+        [=](const State& s, const Params& x) -> std::optional<std::int32_t> {
+          return s[vn_count[x[0]]];
         });
   }
   for (int p = 0; p < n; ++p)
-    a.output(names::vrcv_target_update(p), {{"u", 0, regions - 1}, {"x", 0, points - 1}})
-        .pre([=](const State& s, const Params& x) {
+    deliver(
+        a.output(names::vrcv_target_update(p), {{"u", 0, regions - 1}, {"x", 0, points - 1}})
+            .footprint([=](const Params& x, tioa::Footprint& f) {
+              const int slot = x[0] * n + p;
+              f.reads(tu_pending[slot]).reads(tu_target[slot]);
+              f.sets(tu_pending[slot], false).sets(tu_age[slot], 0);
+              junk_footprint(f);
+            }),
+        [=](const State& s, const Params& x) {
           const int slot = x[0] * n + p;
           return s[tu_pending[slot]] && s[tu_target[slot]] == x[1];
-        })
-        .bind("x",
-              [=](const State& s, const Params& x) -> std::optional<std::int32_t> {
-                return s[tu_target[x[0] * n + p]];
-              })
-        .eff([=](State& s, const Params& x) {
+        },
+        [=](State& s, const Params& x) {
           const int slot = x[0] * n + p;
           s[tu_pending[slot]] = false;
           s[tu_age[slot]] = 0;
-        })
-        .footprint([=](const Params& x, tioa::Footprint& f) {
-          const int slot = x[0] * n + p;
-          f.reads(tu_pending[slot]).reads(tu_target[slot]);
-          f.sets(tu_pending[slot], false).sets(tu_age[slot], 0);
+        },
+        [=](const Params& x) {
+          return Key{junk::target_update, p, x[1], x[0], 0};
+        },
+        "x",
+        [=](const State& s, const Params& x) -> std::optional<std::int32_t> {
+          return s[tu_target[x[0] * n + p]];
         });
-
   a.trajectories(
       [=](State& s) {
         for (int p = 0; p < n; ++p)
@@ -144,6 +279,9 @@ tioa::Automaton vbcast(const VlConfig& c) {
         for (int slot = 0; slot < regions * n; ++slot)
           if (s[tu_pending[slot]])
             s.advance(tu_age[slot]);
+        for (int i = 0; i < junk_slots; ++i)
+          if (s[j_to[i]] != 0)
+            s.advance(j_age[i]);
       },
       [=](const State& s) {
         for (int p = 0; p < n; ++p)
@@ -154,6 +292,9 @@ tioa::Automaton vbcast(const VlConfig& c) {
             return true;
         for (int slot = 0; slot < regions * n; ++slot)
           if (s[tu_pending[slot]] && s[tu_age[slot]] >= d)
+            return true;
+        for (int i = 0; i < junk_slots; ++i)
+          if (s[j_to[i]] != 0 && s[j_age[i]] >= d)
             return true;
         return false;
       });

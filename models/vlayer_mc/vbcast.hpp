@@ -17,6 +17,17 @@
 //   output vrcv(⟨cn-update, p, l⟩)_v, vrcv(⟨vn-update, u, n⟩)_v, vrcv(⟨target-update, u, x⟩)_p
 //                                      pre the receiver is in P′    eff remove it from P′
 //   trajectories: the age of a slot with receivers advances; stop when such a slot is d old
+//
+// With junk slots (D31, config.junk > 0: the automata of U(VLNodes) only), the messages a
+// client's VBDelay held at the start are on their way in slot p·junk + j:
+//
+//   junk_kind/id/value[i]   the message (models/vlayer_mc/junk.hpp)
+//   junk_from[i], junk_to[i], junk_age[i]   the sender's region, the mask of receivers still
+//                                           to get it (junk::receivers), its age
+//   input  vcast′_junk(j, kind, id, value)_p   eff slot := the message, to := its receivers
+//                                              from reg[p] (empty when none)
+//   the deliveries above also deliver junk copies: one choice per copy pending for the
+//   receiver, the sender's own slot first
 
 #include "models/vlayer_mc/config.hpp"
 #include "tioa/automaton.hpp"

@@ -9,6 +9,13 @@
 //   output vcast′(⟨cn-update, p, l⟩)_p   pre held ∧ l = loc    eff held := false; age := 0
 //   trajectories: age advances while held; stop when held ∧ age ≥ e
 //
+// With junk slots (D31, config.junk > 0: the automata of U(VLNodes) only), slot j holds a
+// message ⟨kind, id, value⟩ of models/vlayer_mc/junk.hpp that no vcast put there:
+//
+//   junk_kind/id/value/age[j]
+//   output vcast′_junk(j, kind, id, value)_p  pre slot j holds it   eff slot j := empty
+//   trajectories: a full slot's age advances; stop when one is e old
+//
 // VSAs have e = 0 and no buffer (D7).
 
 #include "models/vlayer_mc/config.hpp"

@@ -1,5 +1,6 @@
 #include "proofs/vlayer_mc/arbitrary_starts.hpp"
 
+#include <chrono>
 #include <random>
 
 #include "checker/explorer.hpp"
@@ -40,7 +41,12 @@ EnvironmentStates environment_states(const tioa::Automaton& env, std::uint64_t l
   });
   std::mt19937_64 random(a.seed ^ 0x5eedULL);
   std::vector<Word> at(words), scratch(words + 1), next;
+  const auto began = std::chrono::steady_clock::now();
   for (std::uint64_t n = 0; n < a.samples; ++n) {
+    // The property's time limit holds here too: the samples then end walks already made.
+    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - began;
+    if (n > 0 && options.limits.out_of_time(elapsed.count()))
+      break;
     const std::size_t first =
         std::uniform_int_distribution<std::size_t>(0, starts.size() - 1)(random);
     std::copy_n(starts.data.begin() + static_cast<std::ptrdiff_t>(first * words), words,
@@ -64,19 +70,38 @@ EnvironmentStates environment_states(const tioa::Automaton& env, std::uint64_t l
 
 } // namespace
 
-std::string faults_note(const Faults& faults) {
+std::string faults_note(const Faults& faults, bool dr_rule) {
+  const std::string rule =
+      dr_rule ? "; dr_rule=1: VW restarts VN_u when a live client has been in u for d_r "
+                "(D32), a restart after t0 the lemma does not assume"
+              : "";
   if (!faults.robots && !faults.vsas)
-    return "no failure or restart after t0 = 0; failed flags start arbitrary (D13)";
+    return "no failure or restart after t0 = 0; failed flags start arbitrary (D13)" + rule;
   const std::string who = faults.robots && faults.vsas ? "robots and VSAs"
                           : faults.robots              ? "robots"
                                                        : "VSAs";
   return "failures and restarts after t0: " + who +
          " fail and restart at any time (robot_faults/vsa_faults); the lemma assumes none "
-         "after t0 (seed 000 line 772, D13), so a late failure may break its bound";
+         "after t0 (seed 000 line 772, D13), so a late failure may break its bound" +
+         rule;
 }
 
-UStarts u_starts(const VlConfig& c, const ArbitraryStarts& a,
+std::string junk_note(int junk) {
+  if (junk == 0)
+    return "junk=0: a client's VBDelay starts with at most its own cn-update and VBcast with "
+           "one message per sender and kind, narrower than U(VLNodes) (README D31)";
+  return "junk=" + std::to_string(junk) +
+         ": besides its own cn-update, each client's VBDelay "
+         "starts with up to " +
+         std::to_string(junk) +
+         " messages of any kind, id and value, and VBcast with as many per client on their way "
+         "(README D31)";
+}
+
+UStarts u_starts(const VlConfig& config, const ArbitraryStarts& a,
                  const checker::ExploreOptions& options) {
+  VlConfig c = config;
+  c.junk = a.junk;
   UStarts u{vlayer(c, a.faults), {}, false, 0, 0, "", {}};
   const tioa::Automaton env = environment(c, a.faults);
   const EnvironmentStates reach = environment_states(env, a.environment_limit, a, c.delta, options);

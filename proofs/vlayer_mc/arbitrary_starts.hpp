@@ -27,13 +27,21 @@ struct ArbitraryStarts {
   // none (seed 000 line 772, D13), the default; the instance's robot_faults and vsa_faults
   // let them happen at any time.
   Faults faults = after_t0;
+  // D31: each client's VBDelay holds up to this many messages of any kind and id besides its
+  // own cn-update, and VBcast as many of them on their way (the `junk` parameter, at least
+  // 2 by default: issue 15).
+  int junk = 2;
 };
 
-// The note of a stabilisation check on the faults after t0 it let happen.
-std::string faults_note(const Faults& faults);
+// The note of a stabilisation check on the faults after t0 it let happen, and on the
+// restarts the d_r rule makes (D32).
+std::string faults_note(const Faults& faults, bool dr_rule);
+// The note of a stabilisation check on the messages its start states' buffers hold (D31).
+std::string junk_note(int junk);
 
 struct UStarts {
-  tioa::Automaton layer; // VLayer[MC] with the faults of ArbitraryStarts::faults
+  // VLayer[MC] with the faults and junk slots of ArbitraryStarts
+  tioa::Automaton layer;
   StateList states;
   bool exhaustive = false;
   long double space = 0; // |valuations of VLNodes| · |Reach(env)|

@@ -39,6 +39,17 @@ KnownLmc::KnownLmc(const VlConfig& c, const tioa::Automaton& layer,
     guarded(at("VBcast.vn_mask", u), {at("VBcast.vn_age", u), at("VBcast.vn_count", u)});
   for (int i = 0; i < regions * robots; ++i)
     guarded(at("VBcast.tu_pending", i), {at("VBcast.tu_age", i), at("VBcast.tu_target", i)});
+  // D31: the junk slots of the arbitrary start states' automata, where there are any.
+  for (int p = 0; p < robots; ++p) {
+    const std::string delay = names::cn_name(p) + ".delay.";
+    for (int j = 0; find_slot(layer, at(delay + "junk_kind", j)); ++j)
+      guarded(at(delay + "junk_kind", j),
+              {at(delay + "junk_id", j), at(delay + "junk_value", j), at(delay + "junk_age", j)});
+  }
+  for (int i = 0; find_slot(layer, at("VBcast.junk_to", i)); ++i)
+    guarded(at("VBcast.junk_to", i),
+            {at("VBcast.junk_kind", i), at("VBcast.junk_id", i), at("VBcast.junk_value", i),
+             at("VBcast.junk_from", i), at("VBcast.junk_age", i)});
   // Built state by state as the explorer takes them (its limits hold there), never whole.
   const tioa::StartSet reset = reset_family(c, layer);
   std::vector<tioa::Slot> failed;

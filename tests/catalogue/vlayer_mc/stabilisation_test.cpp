@@ -139,3 +139,21 @@ TEST_CASE("vlayer-mc theorem-7.5 on 1x1, repaired: directly and through Lemma 3.
     transitivity = transitivity || note == "Lemma 3.4: t = 6 <= t1 + t2 = 8";
   CHECK(transitivity);
 }
+
+// D31: the start states' buffers hold junk messages (junk=2 by default); junk=0 leaves only
+// each client's own cn-update. The report says which, and the trace is one of the automaton
+// with the junk slots.
+TEST_CASE("vlayer-mc lemma-7.3 on 1x1: junk messages in the start states", "[vlayer]") {
+  const std::vector<std::string> repaired{"cols=1", "cn_repair=1", "vn_repair=1", "samples=100"};
+  const auto [r, system] = run_stabilisation("lemma-7.3", repaired);
+  CHECK(vl_test::has_note(r, "junk=2: besides its own cn-update"));
+  REQUIRE(r.trace_system);
+  CHECK(r.trace_system->layout().find("CN_0.delay.junk_kind[1]") != nullptr);
+  CHECK(system.layout().find("VBcast.junk_to[1]") != nullptr);
+  std::vector<std::string> narrow = repaired;
+  narrow.push_back("junk=0");
+  const auto without = run_stabilisation("lemma-7.3", narrow).result;
+  CHECK(vl_test::has_note(without, "junk=0"));
+  CHECK(without.trace_system->layout().find("CN_0.delay.junk_kind[0]") == nullptr);
+  CHECK(r.states > without.states); // the junk is delivered: more steps from the samples
+}

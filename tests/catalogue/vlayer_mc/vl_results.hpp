@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "catalogue/registry.hpp"
@@ -14,7 +15,7 @@ namespace vl_test {
 
 struct PropertyRun {
   checker::PropertyResult result;
-  tioa::Automaton system; // to replay the result's trace
+  tioa::Automaton system; // to replay the result's trace: its trace_system, else the model's
 };
 
 inline PropertyRun run_property(const std::string& property,
@@ -22,8 +23,11 @@ inline PropertyRun run_property(const std::string& property,
   const catalogue::ModelDefinition def = catalogue::vlayer_mc_definition();
   const catalogue::ModelInstance m = def.build(catalogue::resolve_params(def, settings));
   for (const auto& p : m.properties)
-    if (p.name == property)
-      return {checker::run_property(m.system, p, {}), m.system};
+    if (p.name == property) {
+      checker::PropertyResult r = checker::run_property(m.system, p, {});
+      const tioa::Automaton system = r.trace_system ? *r.trace_system : m.system;
+      return {std::move(r), system};
+    }
   FAIL("no property " << property);
   return {{}, m.system};
 }
