@@ -76,6 +76,15 @@ inline int whole(const ParamValues& p, const char* name) {
   return static_cast<int>(p.at(name).integer());
 }
 
+// An automaton a property explored instead of the model's system (vlayer-mc's arbitrary
+// start states, with junk slots): a trace of it replays on it, from a first state that
+// `is_start` accepts (nullopt: too costly to tell; the replay says so).
+struct TraceSystem {
+  tioa::Automaton automaton;
+  std::string starts; // what its start states are, for the replay's messages
+  std::function<std::optional<bool>(const tioa::Word* state)> is_start;
+};
+
 struct ModelInstance {
   tioa::Automaton system;
   std::vector<checker::Property> properties;
@@ -90,6 +99,9 @@ struct ModelInstance {
   // own properties carry it themselves.
   tioa::StatePredicate beyond_bound = {};
   std::string bound_name = "";
+  // Automata other than `system` that a property's trace may be of (PropertyResult::
+  // trace_system), by the name the result gives them: `replay` replays such a trace there.
+  std::map<std::string, TraceSystem> trace_systems = {};
 };
 
 // One entry of the default suite: an instance, a property, and the verdict we expect.

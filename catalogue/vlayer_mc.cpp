@@ -11,6 +11,7 @@
 #include "proofs/lemma_7_7.hpp"
 #include "proofs/theorem_7_5.hpp"
 #include "proofs/theorem_7_8.hpp"
+#include "proofs/vlayer_mc/arbitrary_starts.hpp"
 #include "proofs/vlayer_mc/legal_sets.hpp"
 #include "tioa/operators.hpp"
 
@@ -258,6 +259,15 @@ ModelDefinition vlayer_mc_definition() {
             })};
     for (checker::Property& property : m.properties)
       property = counting_fig7(std::move(property), c.branch_tally);
+    // The traces of lemma-7.3, lemma-7.4 and theorem-7.5 start in U(VLNodes) || R(env), on
+    // the automaton with junk slots: replay replays them there, and looks for the first
+    // state's environment part among the first 5 million states of Reach(env).
+    m.trace_systems.emplace(vlayer_mc::u_layer_name,
+                            TraceSystem{vlayer_mc::u_layer(c, starts),
+                                        "U(VLNodes) || R(RW || VW || VBcast)",
+                                        [=](const tioa::Word* state) {
+                                          return vlayer_mc::is_u_start(c, starts, state, 5'000'000);
+                                        }});
     return m;
   };
   // Each well under a few seconds (tests/catalogue/vlayer_mc/*_test.cpp pin the counts).

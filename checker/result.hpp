@@ -64,6 +64,9 @@ struct PropertyResult {
   // another one than the model's system (vlayer-mc's arbitrary start states have junk
   // slots, D31); null: the system. Reports render the trace with trace_layout_or().
   std::shared_ptr<const tioa::Automaton> trace_system;
+  // The name its model gives that automaton (catalogue::ModelInstance::trace_systems), which
+  // a trace file records so that `replay` can replay the trace on it.
+  std::string trace_system_name;
   const tioa::StateLayout& trace_layout_or(const tioa::StateLayout& system) const {
     return trace_system ? trace_system->layout() : system;
   }

@@ -100,6 +100,10 @@ Json trace_json(const tioa::StateLayout& system_layout, const checker::PropertyR
   out["length"] = trace.length();
   if (marked)
     out["legal_set"] = result.legal_set_name;
+  // A trace of another automaton than the system (ModelInstance::trace_systems): replay
+  // replays it there.
+  if (!result.trace_system_name.empty())
+    out["system"] = result.trace_system_name;
   out["steps"] = std::move(steps);
   return out;
 }

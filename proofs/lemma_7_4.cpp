@@ -73,6 +73,7 @@ PropertyResult check_lemma_7_4(const VlConfig& c, MWindow window, const Arbitrar
   r.notes.push_back(junk_note(starts.junk));
   // Its trace is one of u.layer, which has junk slots (D31).
   r.trace_system = std::make_shared<const tioa::Automaton>(u.layer);
+  r.trace_system_name = u_layer_name;
   note_repairs(c, r);
   note_round_length(c, r);
   return r;

@@ -1,5 +1,6 @@
 #include "proofs/vlayer_mc/arbitrary_starts.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <random>
 
@@ -68,6 +69,13 @@ EnvironmentStates environment_states(const tioa::Automaton& env, std::uint64_t l
   return out;
 }
 
+// The config of the start states' automata: the junk slots of `a` (D31).
+VlConfig with_junk(const VlConfig& config, const ArbitraryStarts& a) {
+  VlConfig c = config;
+  c.junk = a.junk;
+  return c;
+}
+
 } // namespace
 
 std::string faults_note(const Faults& faults, bool dr_rule) {
@@ -98,10 +106,38 @@ std::string junk_note(int junk) {
          "(README D31)";
 }
 
+tioa::Automaton u_layer(const VlConfig& config, const ArbitraryStarts& a) {
+  return vlayer(with_junk(config, a), a.faults);
+}
+
+std::optional<bool> is_u_start(const VlConfig& config, const ArbitraryStarts& a,
+                               const tioa::Word* state, std::uint64_t limit) {
+  VlConfig c = with_junk(config, a);
+  c.branch_tally = nullptr; // replay's search is not a computation of the check
+  const tioa::Automaton layer = vlayer(c, a.faults), env = environment(c, a.faults);
+  std::vector<Word> wanted(env.words() + 1, 0);
+  tioa::State projected(wanted.data(), 0);
+  const tioa::State from(state, 0);
+  for (const auto& v : env.layout().variables())
+    projected.set_code(v.slot(), from.code(layer.layout().find(v.name)->slot()));
+  checker::ExploreOptions options;
+  options.limits.max_states = limit;
+  const tioa::SuccessorGenerator generator(env);
+  // The search stops at the state (a target).
+  const checker::Exploration reach = checker::explore(
+      generator, env.start(), options, checker::hooks().with_target([&](const Word* s) {
+        return std::equal(wanted.begin(), wanted.end() - 1, s);
+      }));
+  if (reach.found)
+    return true;
+  if (!reach.complete())
+    return std::nullopt;
+  return false;
+}
+
 UStarts u_starts(const VlConfig& config, const ArbitraryStarts& a,
                  const checker::ExploreOptions& options) {
-  VlConfig c = config;
-  c.junk = a.junk;
+  const VlConfig c = with_junk(config, a);
   UStarts u{vlayer(c, a.faults), {}, false, 0, 0, "", {}};
   const tioa::Automaton env = environment(c, a.faults);
   const EnvironmentStates reach = environment_states(env, a.environment_limit, a, c.delta, options);

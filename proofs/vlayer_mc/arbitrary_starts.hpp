@@ -4,6 +4,7 @@
 // them when there are few enough, else a seeded sample (proofs/vlayer_mc/stabilisation_common.hpp).
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "checker/options.hpp"
@@ -53,5 +54,17 @@ struct UStarts {
 
 UStarts u_starts(const VlConfig& config, const ArbitraryStarts& starts,
                  const checker::ExploreOptions& options);
+
+// The automaton the stabilisation checks explore from U(VLNodes) || R(env): VLayer[MC] with
+// the faults and junk slots of `starts` (UStarts::layer), and the name their results give
+// it (PropertyResult::trace_system_name).
+tioa::Automaton u_layer(const VlConfig& config, const ArbitraryStarts& starts);
+inline constexpr const char* u_layer_name = "U(VLNodes) || R(RW || VW || VBcast)";
+
+// Whether `state` (of u_layer) is a start state of U(VLNodes) || R(env): every valuation of
+// the nodes, and a reachable state of the environment, which is looked for among its first
+// `limit` reachable states (nullopt: not among them, and there are more).
+std::optional<bool> is_u_start(const VlConfig& config, const ArbitraryStarts& starts,
+                               const tioa::Word* state, std::uint64_t limit);
 
 } // namespace vlayer_mc

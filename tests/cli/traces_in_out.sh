@@ -45,6 +45,22 @@ grep -q "not a start state" replay.txt || fail "not a start state: $(cat replay.
 [ $? -eq 2 ] || fail "a file of another model: expected exit 2"
 grep -q "of model 'fischer', not 'token-ring'" err.txt || fail "$(cat err.txt)"
 
+# A stabilisation counterexample starts in U(VLNodes) || R(env), on vlayer-mc's automaton with
+# junk slots: the file names that system, and replay replays the trace there.
+"$tool" check vlayer-mc -p cols=1,window=closed --prop lemma-7.3 --trace-out stab.json > /dev/null
+[ $? -eq 1 ] || fail "check vlayer-mc lemma-7.3: expected exit 1"
+grep -q '"system": "U(VLNodes)' stab.json || fail "the trace file does not name its system"
+"$tool" replay vlayer-mc stab.json > replay.txt || fail "replay of lemma-7.3: $(cat replay.txt)"
+grep -q "31 steps: replays;" replay.txt || fail "$(cat replay.txt)"
+edit stab.json "s=d['traces'][0]['steps'][0]['state']; s['RW.loc[0]']=(s['RW.loc[0]']+1)%9" moved.json
+"$tool" replay vlayer-mc moved.json > replay.txt
+[ $? -eq 1 ] || fail "a stabilisation trace with a robot moved replayed: $(cat replay.txt)"
+grep -q "does not replay" replay.txt || fail "robot moved: $(cat replay.txt)"
+edit stab.json "d['traces'][0]['system']='nope'" nosystem.json
+"$tool" replay vlayer-mc nosystem.json 2> err.txt
+[ $? -eq 2 ] || fail "a trace of an unknown system: expected exit 2"
+grep -q "has no system 'nope'" err.txt || fail "$(cat err.txt)"
+
 # --start and --invariant go into the file, and replay uses them.
 "$tool" check fischer -p N=2,A=2,B=1 --start 'loc[1]=REQ, id=0, c[1]=0' \
   --invariant 'count(i in 1..2: loc[i] = CS) <= 1' --trace-out given.json > /dev/null

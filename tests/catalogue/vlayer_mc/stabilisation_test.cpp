@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include "checker/trace.hpp"
+#include "proofs/vlayer_mc/arbitrary_starts.hpp"
 #include "tests/catalogue/vlayer_mc/vl_results.hpp"
 
 using vl_test::figure;
@@ -156,4 +157,23 @@ TEST_CASE("vlayer-mc lemma-7.3 on 1x1: junk messages in the start states", "[vla
   CHECK(vl_test::has_note(without, "junk=0"));
   CHECK(without.trace_system->layout().find("CN_0.delay.junk_kind[0]") == nullptr);
   CHECK(r.states > without.states); // the junk is delivered: more steps from the samples
+}
+
+// Replay's start check for these traces (ModelInstance::trace_systems): the first state of a
+// counterexample is one of U(VLNodes) || R(env); one whose environment part VBcast could not
+// have reached (a cn-update pending before VBcast knew the robot's region) is not found.
+TEST_CASE("vlayer-mc: the first state of a lemma-7.3 trace is a start state of U x R", "[vlayer]") {
+  const auto [r, system] = run_stabilisation("lemma-7.3", {"cols=1"});
+  REQUIRE(r.trace);
+  CHECK(r.trace_system_name == vlayer_mc::u_layer_name);
+  vlayer_mc::VlConfig c;
+  c.cols = 1;
+  const vlayer_mc::ArbitraryStarts starts;
+  std::vector<tioa::Word> first = r.trace->steps.front().state;
+  CHECK(vlayer_mc::is_u_start(c, starts, first.data(), 5'000'000) == true);
+  first.push_back(0);
+  tioa::State s(first.data(), 0);
+  REQUIRE(s.is_bottom(tioa::find_variable<int>(system, "VBcast.reg[0]")));
+  s.set(tioa::find_variable<bool>(system, "VBcast.cn_pending[0]"), true);
+  CHECK(vlayer_mc::is_u_start(c, starts, first.data(), 10'000) == std::nullopt);
 }
