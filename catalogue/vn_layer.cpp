@@ -1,5 +1,8 @@
 #include "catalogue/vn_layer.hpp"
 
+#include <memory>
+
+#include "catalogue/fig7_figures.hpp"
 #include "models/vn_layer/layer.hpp"
 #include "proofs/vn_layer/layer_checks.hpp"
 #include "tioa/operators.hpp"
@@ -84,7 +87,8 @@ ModelDefinition vn_layer_definition() {
     return vn_layer::invalid(vn_layer_config(p));
   };
   d.build = [](const ParamValues& p) {
-    const vn_layer::VnConfig c = vn_layer_config(p);
+    vn_layer::VnConfig c = vn_layer_config(p);
+    c.branch_tally = std::make_shared<vlayer_mc::BranchTally>();
     const vn_layer::Lattice lattice = c.lattice();
     const tioa::Automaton layer = vn_layer::vn_layer(c, p.at("cn_faults") == 1);
     std::vector<vn_layer::Point> corner(static_cast<std::size_t>(c.cns),
@@ -112,6 +116,8 @@ ModelDefinition vn_layer_definition() {
                         [=](const checker::ExploreOptions& o) {
                           return vn_layer::check_y_consistency(c, system, o);
                         })};
+    for (checker::Property& property : m.properties)
+      property = counting_fig7(std::move(property), c.branch_tally);
     return m;
   };
   // 2×1 with 2 CNs at every placement (a second each); then from the corner, what breaks:

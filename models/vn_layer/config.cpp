@@ -17,6 +17,7 @@ vlayer_mc::VlConfig VnConfig::targets_config() const {
   c.rho1 = rho1;
   c.rho2 = rho2;
   c.owned_ends = owned_ends;
+  c.branch_tally = branch_tally;
   return c;
 }
 

@@ -4,6 +4,7 @@
 // client nodes, the lattice, and the constants of the layer, every time a whole number of
 // quanta.
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -37,6 +38,9 @@ struct VnConfig {
   VnFail vn_fail = VnFail::empty;
   bool vns_start_failed = true; // C11: no emulator has joined at time 0
   bool owned_ends = false;      // vlayer-mc's D14 variant of calctarget's lines 35–36
+  // Not a parameter: where the VNs' target computations count the branches of Fig. 7 they
+  // take (vlayer_mc::BranchTally, through targets_config()); null counts nowhere.
+  std::shared_ptr<vlayer_mc::BranchTally> branch_tally;
 
   Lattice lattice() const { return Lattice(rows, cols, b, nbh); }
   // The phases (realtime − round·δ) of the CN's sends (Fig. 2 lines 34–50): cn-update at 0,

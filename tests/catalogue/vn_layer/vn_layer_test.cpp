@@ -110,3 +110,20 @@ TEST_CASE("vn-layer: a CN that fails and recovers can send twice in one instant,
   CHECK(r.verdict == checker::Verdict::incomplete);
   CHECK_THAT(r.message, Catch::Contains("one message per kind and sender in VLBcast"));
 }
+
+// The VNs compute targets with vlayer-mc's assign and calctarget (C18, C19), and every report
+// counts the branches of seed 002 Fig. 7 they take, as vlayer-mc's do: with both CNs at one
+// corner off the curve, the boundary branch sends one of them towards the curve.
+TEST_CASE("vn-layer reports count the branches of Fig. 7", "[vn-layer]") {
+  const auto r = vt::run("y-consistency", {"start=corner"}).result;
+  const auto figure = [&](const std::string& name) -> std::string {
+    for (const auto& [key, value] : r.figures)
+      if (key == name)
+        return value;
+    return "(none)";
+  };
+  CHECK(figure("Fig. 7 computations (distinct)") == "4");
+  CHECK(figure("Fig. 7 lines 19-22 boundary, reassigning") == "1");
+  CHECK(figure("Fig. 7 lines 30-31 robots to a neighbour's centre") == "1");
+  CHECK(figure("Fig. 7 lines 7-12 on the curve, reassigning") == "0");
+}
