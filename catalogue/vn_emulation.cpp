@@ -17,6 +17,9 @@ vn_emulation::EmuConfig vn_emulation_config(const ParamValues& p) {
                                               : vn_emulation::Inputs::anywhere;
   c.record_always = p.at("record").text() == "always";
   c.quiescent_ack = p.at("ack").text() == "quiescent";
+  c.printed_init_action = p.at("init_action").text() == "printed";
+  c.printed_restart = p.at("restart").text() == "printed";
+  c.vn = p.at("vn").text() == "report" ? vn_emulation::Vn::report : vn_emulation::Vn::fifo;
   return c;
 }
 
@@ -43,7 +46,17 @@ ModelDefinition vn_emulation_definition() {
                         "executes it (the OCR's indentation lost, D9) or always"),
       ParamSpec::choice("ack", "quiescent", {"quiescent", "any"},
                         "ack-join waits until no VN action is enabled (as printed, line 456) "
-                        "or not")};
+                        "or not"),
+      ParamSpec::choice("init_action", "once", {"once", "printed"},
+                        "init-action suggests each action once per VN state (D6, the intent of "
+                        "line 358) or as printed (lines 420-424: its precondition stays true, "
+                        "so time never passes again, F1)"),
+      ParamSpec::choice("restart", "once", {"once", "printed"},
+                        "a joiner's restart sends one reset (D7) or as printed (lines 430-434: "
+                        "its precondition stays true, F1)"),
+      ParamSpec::choice("vn", "fifo", {"fifo", "report"},
+                        "the VN emulated: a FIFO counter that sends from a queue (as Fig. 6's "
+                        "VN) or one whose send reports the current count (F3)")};
   d.properties = {
       {"no-timelock", "every reachable state has an action or a tick"},
       {"replica-consistency", "where time passes, the active replicas hold the same VN state "
@@ -72,13 +85,17 @@ ModelDefinition vn_emulation_definition() {
                         [=](const checker::ExploreOptions& o) {
                           return vn_emulation::check_replica_consistency(e, o);
                         });
-    // P7 runs on an emulation with its monitor's ghosts, built when the check runs.
+    // P7 and theorem-2 run on emulations with their monitors' ghosts, built when the
+    // check runs.
     vn_emulation::EmuConfig monitored = c;
     monitored.refinement_monitor = true;
+    vn_emulation::EmuConfig delivered = monitored; // the restarts of VN_0 as P7 maps them
+    delivered.delivery_monitor = true;
     m.properties = {std::move(no_timelock), std::move(replicas),
                     custom_property("theorem-2", "Theorem 2's figures against the stated ones",
                                     [=](const checker::ExploreOptions& o) {
-                                      return vn_emulation::check_theorem_2(e, o);
+                                      return vn_emulation::check_theorem_2(
+                                          vn_emulation::emulation(delivered), o);
                                     }),
                     custom_property("refines-vn",
                                     "the emulation's events are the abstract VN's, and the "
@@ -104,7 +121,18 @@ ModelDefinition vn_emulation_definition() {
              {{}, "no-live-restart", checker::Verdict::holds},
              {{{"start", ParamValue::choice("cold")}, {"messages", 0}, {"fails", 0}},
               "theorem-2",
-              checker::Verdict::holds}};
+              checker::Verdict::holds},
+             // F1: restart as printed time-locks the cold start at 7 (README "Readings").
+             {{{"start", ParamValue::choice("cold")},
+               {"messages", 0},
+               {"fails", 0},
+               {"restart", ParamValue::choice("printed")}},
+              "no-timelock",
+              checker::Verdict::violated},
+             // F3: a VN whose send reports its current value misses d_MMT (6 > 4).
+             {{{"pns", 1}, {"messages", 3}, {"fails", 0}, {"vn", ParamValue::choice("report")}},
+              "theorem-2",
+              checker::Verdict::violated}};
   return d;
 }
 

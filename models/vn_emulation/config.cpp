@@ -21,7 +21,10 @@ std::string describe(const EmuConfig& c) {
          ", eps=" + std::to_string(c.eps) + ", messages=" + std::to_string(c.messages) +
          ", fails=" + std::to_string(c.fails) +
          ", start=" + (c.start == Start::cold ? "cold" : "warm") +
-         ", inputs=" + (c.inputs == Inputs::anywhere ? "anywhere" : "ticks");
+         ", inputs=" + (c.inputs == Inputs::anywhere ? "anywhere" : "ticks") +
+         (c.vn == Vn::report ? ", vn=report" : "") +
+         (c.printed_init_action ? ", init_action=printed" : "") +
+         (c.printed_restart ? ", restart=printed" : "");
 }
 
 } // namespace vn_emulation

@@ -14,6 +14,10 @@ namespace vn_emulation {
 enum class Start { cold, warm };
 // When the environment acts (D24): between any two steps, or only where time may pass.
 enum class Inputs { anywhere, ticks };
+// The VN emulated (D31): the FIFO counter, whose sends come from a queue (Fig. 6's VN
+// sends so), or the "report" VN, whose one pending send carries the current count and
+// last sender, so that every receive changes what is to be sent (F3).
+enum class Vn { fifo, report };
 
 struct EmuConfig {
   int pns = 2;      // physical nodes PN_0..PN_{pns−1}, all in the one zone B_0
@@ -26,14 +30,22 @@ struct EmuConfig {
   // Readings of lines the OCR or the paper leave open (README "Readings"):
   bool record_always = false; // D9: completed-actions += key after the if, not inside it
   bool quiescent_ack = true;  // D32: ack-join waits until no VN action is enabled (002:456)
+  // D6 / D7 as printed (F1): init-action's and restart's preconditions stay true after
+  // they fire, and 002:410 stops time while a precondition holds (README "Readings").
+  bool printed_init_action = false;
+  bool printed_restart = false;
+  Vn vn = Vn::fifo;
   // The ghosts of P7's monitor (refinement.hpp), declared only for the check that reads
   // them, so that the other checks keep their state counts.
   bool refinement_monitor = false;
+  // The ghosts of theorem-2's d_v for VN messages to the clients (delivery_monitor.hpp),
+  // declared only for that check, for the same reason.
+  bool delivery_monitor = false;
 
   // The instance VN, a FIFO counter (D31): count mod counter_modulus, the last sender, a
   // send queue of at most out_capacity entries, and a send counter mod send_modulus.
   static constexpr int counter_modulus = 2;
-  static constexpr int out_capacity = 2;
+  static constexpr int out_capacity = 3;
   static constexpr int send_modulus = 4;
   // The model's bounds on its queues and sets (a state past one is flagged, and a check
   // that meets one is incomplete, never wrong).
@@ -42,10 +54,10 @@ struct EmuConfig {
   static constexpr int local_out_capacity = 2; // local-out
   static constexpr int flight_capacity = 4;    // LBcast packets in flight per sender
   static constexpr int buffer_capacity = 6;    // TOBcast's hold buffer
-  static constexpr int key_capacity = 2;       // send keys in completed-actions
-  static constexpr int seen_capacity = 2;      // VN message ids a client remembers
+  static constexpr int key_capacity = 3;       // send keys in completed-actions
+  static constexpr int seen_capacity = 3;      // VN message ids a client remembers
   static constexpr int sequence_capacity = 7;  // TOBcast sequence numbers in one instant
-  static constexpr int sent_capacity = 2;      // P7's monitor: VN message ids transmitted
+  static constexpr int sent_capacity = 3;      // P7's monitor: VN message ids transmitted
   static constexpr int reset_capacity = 2;     // P7's monitor: resets delivered
 
   // TOBcast delivers a packet exactly d_p + ε after it was sent (002:348).

@@ -4,6 +4,7 @@
 #include <string>
 #include <tuple>
 
+#include "models/vn_emulation/delivery_monitor.hpp"
 #include "models/vn_emulation/key_set.hpp"
 #include "models/vn_emulation/predicates.hpp"
 #include "models/vn_emulation/refinement.hpp"
@@ -203,6 +204,7 @@ void tick(const Slots& slots, State& s) {
     collect(s, p.seen_age, p.seen_from, c.horizon());
   }
   monitor_age(slots, s);
+  delivery_tick(slots, s);
 }
 
 // What each step may read and write (tioa/footprint.hpp), for the zero-time reduction: a
@@ -233,9 +235,17 @@ void declare_footprints(tioa::Automaton& a, const std::shared_ptr<const Slots>& 
       if (slots->refinement)
         block(f, slots->refinement->block);
     };
+    // theorem-2's VN -> CN monitor, when there is one: VN messages sent and received, fails.
+    const auto delivery = [=](tioa::Footprint& f) {
+      if (slots->delivery)
+        block(f, slots->delivery->block);
+    };
     declare("TOBcast-rcv" + id, [=](const Params&, tioa::Footprint& f) {
       block(f, own);
       monitor(f);
+      if (slots->delivery)
+        for (const auto& wait : slots->message_wait)
+          f.writes(wait);
     });
     declare("recover" + id, [=](const Params&, tioa::Footprint& f) {
       block(f, own);
@@ -253,10 +263,12 @@ void declare_footprints(tioa::Automaton& a, const std::shared_ptr<const Slots>& 
         for (const PnSlots& p : slots->pns)
           f.reads(p.up);
         monitor(f);
+        delivery(f);
       });
     declare("lb-rcv" + id, [=](const Params& m, tioa::Footprint& f) {
       block(f, own);
       block(f, slots->pns[m[0]].flight_block);
+      delivery(f);
     });
     declare("fail" + id, [=](const Params&, tioa::Footprint& f) {
       block(f, own);
@@ -264,6 +276,7 @@ void declare_footprints(tioa::Automaton& a, const std::shared_ptr<const Slots>& 
         block(f, p.flight_block);
       f.reads(slots->fails_left).writes(slots->fails_left);
       environment_reads(f);
+      delivery(f);
     });
     declare("cn-send" + id, [=](const Params&, tioa::Footprint& f) {
       block(f, own);
@@ -332,6 +345,19 @@ Emulation emulation(const EmuConfig& c) {
 
     // Internal restart_{i,h} (002:430–434): status = listening ∧ x ∈ B_h ∧ realtime =
     // join-id + 3d_p + 4ε → TOBcast-out ∪ {⟨reset⟩}; once (D7: reset-sent).
+    //
+    // F1, the readings `restart=printed` and `init_action=printed` (D6, D7): the printed
+    // preconditions do not read reset-sent or proposed, so they stay true after the step,
+    // and 002:410 stops time while they hold. As printed the step fires again and again
+    // at one instant (a Zeno run, each repeat a new TOBcast message). The model still
+    // fires it once and keeps the printed precondition where it decides urgency
+    // (predicates.cpp, pn_urgent). The ticks are the same as the paper's: a repeat only
+    // adds a message to TOBcast-out, and what follows from it (the transmission, LBcast's
+    // receptions into TOBcast's buffer) changes no precondition but TOBcast's and
+    // LBcast's own, since the message is delivered only d_p + ε later, after a tick.
+    // So a state of the model from which no tick is reachable is one from which the
+    // paper's automaton cannot let time pass either: the time-lock that no-timelock
+    // reports is F1's, with a finite trace.
     a.internal("restart" + id)
         .pre([slots, i, status_is](const State& s, const Params&) {
           const PnSlots& q = slots->pns[i];
@@ -349,7 +375,8 @@ Emulation emulation(const EmuConfig& c) {
 
     // Internal init-action(act)_{i,h} (002:420–424): status = active ∧ x ∈ B_h ∧ δ(val,
     // act) ≠ ⊥ → TOBcast-out ∪ {⟨simulate, act, ⟨realtime, i⟩⟩}. The counter's one
-    // locally controlled act is ⟨send, head(out)⟩; suggested once per val (D6: proposed).
+    // locally controlled act is ⟨send, head(out)⟩; suggested once per val (D6: proposed;
+    // the printed reading, F1: see restart above).
     a.internal("init-action" + id)
         .pre([slots, i, status_is](const State& s, const Params&) {
           const PnSlots& q = slots->pns[i];
@@ -393,11 +420,11 @@ Emulation emulation(const EmuConfig& c) {
           };
           if (!known && enabled) {
             if (receive) {
-              if (!value.can_receive()) {
+              if (!value.can_receive(slots->config.vn)) {
                 slots->exceed(s, i, Bound::out);
                 return;
               }
-              value.receive(act.from);
+              value.receive(act.from, slots->config.vn);
               if (!s.is_bottom(slots->message_wait[act.message]))
                 s.set_bottom(slots->message_wait[act.message]); // first execution: owed no more
             } else {
@@ -473,6 +500,7 @@ Emulation emulation(const EmuConfig& c) {
         .eff([slots, i](State& s, const Params&) {
           const Packet message = pop_front(s, slots->pns[i].local_out);
           monitor_transmit(*slots, s, i, message);
+          delivery_transmit(*slots, s, message);
           lb_send(*slots, s, i, message, 0);
         });
 
@@ -492,7 +520,10 @@ Emulation emulation(const EmuConfig& c) {
           const Packet m = head.packet;
           entries.erase(entries.begin());
           store_buffer(s, q, entries);
-          monitor_delivery(*slots, s, i, head); // before the delivery changes the status
+          // Before the delivery changes the status:
+          const bool first_delivery = monitor_delivery(*slots, s, i, head);
+          if (first_delivery && m.kind == Kind::reset)
+            delivery_restart(*slots, s);
           const Status status = s[q.status];
           switch (m.kind) {
           case Kind::simulate_receive:
@@ -578,6 +609,7 @@ Emulation emulation(const EmuConfig& c) {
             // The trivial client delivers a VN message once (D16); VNE_i drops its own
             // zone's VN messages (D14).
             see(*slots, s, i, Key{p.age, p.from});
+            delivery_receive(*slots, s, i, Key{p.age, p.from});
           }
         });
 
@@ -612,6 +644,7 @@ Emulation emulation(const EmuConfig& c) {
         .eff([slots, i](State& s, const Params&) {
           s[slots->fails_left] = s[slots->fails_left] - 1;
           reset_pn(*slots, s, i);
+          delivery_fail(*slots, s, i);
           // LBcast owes nothing to a failed PN; its own packets stay in flight (D25).
           for (const PnSlots& sender : slots->pns) {
             std::vector<Flight> records = load_flight(s, sender), kept;

@@ -26,11 +26,13 @@ bool pn_urgent(const Slots& slots, const State& s, int i) {
   const Status status = s[p.status];
   if (status == Status::idle) // join
     return true;
-  if (status == Status::listening && !s[p.reset_sent] &&
+  // restart and init-action: as printed (F1), their preconditions do not read reset-sent
+  // and proposed, so time stays stopped after they fire (emulation.cpp, "restart").
+  if (status == Status::listening && (c.printed_restart || !s[p.reset_sent]) &&
       optional_value(s, p.join_id) == c.restart_age()) // restart
     return true;
   if (status == Status::active) {
-    if (!s[p.proposed] && s[p.value.length] > 0) // init-action(send)
+    if ((c.printed_init_action || !s[p.proposed]) && s[p.value.length] > 0) // init-action(send)
       return true;
     if (s[p.pending[0].kind] != static_cast<int>(Kind::none)) // simulate-action
       return true;

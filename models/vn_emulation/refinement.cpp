@@ -61,8 +61,8 @@ Reference replay(const Slots& slots, const State& s) {
   for (const Entry& e : load_taken(slots, r, s)) { // stored in delivery order
     const Packet& m = e.packet;
     if (m.kind == Kind::simulate_receive) {
-      if (((ref.done_received >> m.message) & 1) == 0 && ref.val.can_receive()) {
-        ref.val.receive(m.from);
+      if (((ref.done_received >> m.message) & 1) == 0 && ref.val.can_receive(slots.config.vn)) {
+        ref.val.receive(m.from, slots.config.vn);
         ref.done_received |= 1 << m.message;
       }
     } else if (m.kind == Kind::simulate_send) {
@@ -84,23 +84,24 @@ Reference replay(const Slots& slots, const State& s) {
 
 } // namespace
 
-void monitor_delivery(const Slots& slots, State& s, int pn, const Entry& entry) {
+bool monitor_delivery(const Slots& slots, State& s, int pn, const Entry& entry) {
   if (!slots.refinement)
-    return;
+    return false;
   const RefinementSlots& r = *slots.refinement;
   std::vector<Entry> taken = load_taken(slots, r, s);
   const Entry id = remembered(entry);
   if (std::any_of(taken.begin(), taken.end(), [&](const Entry& e) { return same(e, id); }))
-    return; // taken at another PN's delivery
+    return false; // taken at another PN's delivery
   if (taken.size() == r.taken.size()) {
     slots.exceed(s, pn, Bound::taken);
-    return;
+    return false;
   }
   taken.push_back(id);
   store_taken(r, s, std::move(taken));
   // P6: a reset delivered while VN_0 is alive, as it was at the last tick.
   if (entry.packet.kind == Kind::reset && s[r.was_alive] && vn_alive(slots, s))
     s[r.live_restart] = true;
+  return true;
 }
 
 void monitor_transmit(const Slots& slots, State& s, int pn, const Packet& m) {

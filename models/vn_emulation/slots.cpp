@@ -176,7 +176,8 @@ const char* to_string(Bound bound) {
                                       "sequence numbers",
                                       "the VN's out",
                                       "the VN message ids P7's monitor keeps",
-                                      "the TOBcast messages P7's monitor keeps"};
+                                      "the TOBcast messages P7's monitor keeps",
+                                      "the VN message ids theorem-2's VN -> CN monitor keeps"};
   return names[static_cast<int>(bound)];
 }
 
@@ -236,7 +237,7 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
     p.bound_met =
         a.enumeration<Bound>(pn + ".bound_met",
                              {"none", "pending", "tob_out", "local_out", "flight", "buffer", "keys",
-                              "seen", "sequence", "out", "sent_ids", "taken"},
+                              "seen", "sequence", "out", "sent_ids", "taken", "delivery_ids"},
                              Bound::none);
     p.block.bits = a.layout().bits() - p.block.offset;
     slots->pns.push_back(std::move(p));
@@ -261,6 +262,19 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
   for (int m = 0; m < c.messages; ++m)
     slots->message_wait.push_back(
         a.optional_integer(at("Monitor.message_wait", m), 0, c.age_cap()));
+  slots->check_ghosts = a.layout().bits();
+  if (c.delivery_monitor) {
+    DeliverySlots d;
+    d.block.offset = a.layout().bits();
+    for (int k = 0; k < EmuConfig::sent_capacity; ++k) {
+      d.age[k] = age_variable(a, at("Monitor.vn_sent_age", k), c);
+      d.from[k] = a.integer(at("Monitor.vn_sent_from", k), 0, c.pns - 1, 0);
+      d.owed[k] = a.integer(at("Monitor.vn_owed", k), 0, (1 << c.pns) - 1, 0);
+      d.wait[k] = a.optional_integer(at("Monitor.vn_wait", k), 0, c.age_cap());
+    }
+    d.block.bits = a.layout().bits() - d.block.offset;
+    slots->delivery = d;
+  }
   if (c.refinement_monitor) {
     RefinementSlots r;
     r.block.offset = a.layout().bits();

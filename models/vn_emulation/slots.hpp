@@ -119,7 +119,8 @@ enum class Bound {
   sequence,
   out,
   sent_ids,
-  taken
+  taken,
+  delivery_ids
 };
 const char* to_string(Bound bound);
 
@@ -179,6 +180,15 @@ struct RefinementSlots {
   Block block;
 };
 
+// The ghosts of Theorem 2's d_v for VN messages to the clients (VN -> CN, §3.2 and P5 of
+// docs/design/vn-emulation.md; delivery_monitor.hpp): each VN message id from its first
+// transmission on (the abstract send, D17), the clients it is still owed to, and the
+// quanta since (⊥ once nothing is owed). Sorted by id, the empty places last.
+struct DeliverySlots {
+  std::array<Variable<int>, EmuConfig::sent_capacity> age, from, owed, wait;
+  Block block;
+};
+
 struct Slots {
   EmuConfig config;
   std::vector<PnSlots> pns;
@@ -188,6 +198,10 @@ struct Slots {
   Variable<int> task_wait, task_sseq;
   std::vector<Variable<int>> message_wait;
   std::optional<RefinementSlots> refinement; // with EmuConfig::refinement_monitor
+  std::optional<DeliverySlots> delivery;     // with EmuConfig::delivery_monitor
+  // The first bit of the ghosts a check declares for itself (refinement, delivery): a
+  // trace cut there replays on the emulation without them.
+  std::uint32_t check_ghosts = 0;
 
   Completed completed(const State& s, int pn) const;
   void set_completed(State& s, int pn, const Completed& c) const;

@@ -9,6 +9,11 @@
 // It does not commute on purpose (`last`): two inputs taken in different orders give
 // different states, so a replica that saw another order shows in `val`. δ is a function
 // (the replicas must compute the same thing, D33).
+//
+// With Vn::report (F3, `vn=report`) it is the specification's "report" VN instead: out
+// holds at most one entry, the current ⟨count, last⟩, marked after each receive and
+// cleared by the send, so that a receive changes what the pending send carries (the
+// prototype's (count, last, dirty, sseq), docs/design/vn-emulation-prototype).
 
 #include <array>
 
@@ -32,11 +37,17 @@ struct VnValue {
   }
   // δ(val, receive(⟨inc⟩ from c)) is defined while out has room (a full out is the
   // model's bound, never a silent drop).
-  bool can_receive() const { return length < EmuConfig::out_capacity; }
+  bool can_receive(Vn vn) const { return vn == Vn::report || length < EmuConfig::out_capacity; }
 
-  void receive(int client) {
+  void receive(int client, Vn vn) {
     count = (count + 1) % EmuConfig::counter_modulus;
     last = client;
+    if (vn == Vn::report) { // the one pending send now reports the new value
+      out_count[0] = count;
+      out_last[0] = client;
+      length = 1;
+      return;
+    }
     out_count[length] = count;
     out_last[length] = client;
     ++length;

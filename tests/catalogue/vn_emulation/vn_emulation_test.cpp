@@ -155,3 +155,58 @@ TEST_CASE("vn-emulation no-live-restart: with two fails two joiners' resets rest
   CHECK(checker::replay(tioa::SuccessorGenerator(r.system), *r.result.trace, &why));
   INFO(why);
 }
+
+TEST_CASE("vn-emulation F1: restart and init-action as printed stop time for good",
+          "[vn-emulation]") {
+  // As printed, a joiner's restart keeps its precondition after the reset is sent, so the
+  // reset, due d_p + eps later, is never delivered: a cold start time-locks at 7.
+  const et::Run restart =
+      et::run("no-timelock", {"restart=printed", "start=cold", "messages=0", "fails=0"});
+  CHECK(restart.result.verdict == checker::Verdict::violated);
+  CHECK(restart.result.trace_kind == "time-lock");
+  REQUIRE(restart.result.trace);
+  CHECK(restart.result.trace->steps.back().time == 7);
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(restart.system), *restart.result.trace, &why));
+  INFO(why);
+  // The same instance with the decision D7 lets time pass everywhere.
+  CHECK(et::run("no-timelock", {"start=cold", "messages=0", "fails=0"}).result.verdict ==
+        checker::Verdict::holds);
+  // init-action as printed: once the VN has a send to make, time never passes again.
+  const et::Run init = et::run("no-timelock", {"init_action=printed", "fails=0"});
+  CHECK(init.result.verdict == checker::Verdict::violated);
+  REQUIRE(init.result.trace);
+  bool suggested = false;
+  for (const auto& step : init.result.trace->steps)
+    suggested = suggested || step.action.rfind("init-action", 0) == 0;
+  CHECK(suggested);
+  CHECK(checker::replay(tioa::SuccessorGenerator(init.system), *init.result.trace, &why));
+  INFO(why);
+}
+
+TEST_CASE("vn-emulation F3: a VN whose send reports its current value misses d_MMT",
+          "[vn-emulation]") {
+  // Three client messages, received 2 quanta apart: each makes the pending suggestion
+  // stale, so the send task waits 3(d_p + eps) = 6 > 2d_p + 2eps = 4.
+  const et::Run report = et::run("theorem-2", {"pns=1", "vn=report", "messages=3", "fails=0"});
+  CHECK(report.result.verdict == checker::Verdict::violated);
+  CHECK_THAT(report.result.message, Catch::StartsWith("d_MMT exceeds Theorem 2's"));
+  CHECK(et::figure(report.result, "d_MMT measured") == "6");
+  REQUIRE(report.result.trace);
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(report.system), *report.result.trace, &why));
+  INFO(why);
+  // The FIFO counter, on the same inputs, sends within d_p + eps.
+  const auto fifo = et::run("theorem-2", {"pns=1", "messages=3", "fails=0"}).result;
+  CHECK(fifo.verdict == checker::Verdict::holds);
+  CHECK(et::figure(fifo, "d_MMT measured") == "2");
+}
+
+TEST_CASE("vn-emulation theorem-2: VN messages reach the clients within d_p", "[vn-emulation]") {
+  for (const auto& [d_p, expected] : {std::pair{1, "1"}, std::pair{2, "2"}}) {
+    const auto r = et::run("theorem-2", {"fails=0", "d_p=" + std::to_string(d_p)}).result;
+    CHECK(r.verdict == checker::Verdict::holds);
+    CHECK(et::figure(r, "d_v VN -> CN measured") == expected);
+    CHECK(et::figure(r, "d_v measured") == et::figure(r, "d_v CN -> VN measured"));
+  }
+}
