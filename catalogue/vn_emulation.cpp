@@ -7,6 +7,9 @@ namespace catalogue {
 
 vn_emulation::EmuConfig vn_emulation_config(const ParamValues& p) {
   vn_emulation::EmuConfig c;
+  c.zones = whole(p, "zones");
+  c.rp2 = whole(p, "rp2");
+  c.moves = whole(p, "moves");
   c.pns = whole(p, "pns");
   c.d_p = whole(p, "d_p");
   c.eps = whole(p, "eps");
@@ -30,7 +33,14 @@ ModelDefinition vn_emulation_definition() {
                   "(join, reset) over LBcast(d_p) in one zone, emulating a FIFO-counter VN; "
                   "Theorem 2's figures (time: quanta; models/vn_emulation/README.md)";
   d.params = {
-      {"pns", 2, 1, 3, "physical nodes in the zone"},
+      {"zones", 1, 1, 2,
+       "1: one zone, no geometry (instance I1); 2: two zones side by side on a 4 x 2 lattice, "
+       "the PNs moving, LBcast bounded by R_p (I2 with pns=2, I3 with pns=3)"},
+      {"pns", 2, 1, 3, "physical nodes (two zones: the last starts in zone 1)"},
+      {"rp2", 20, 1, 40,
+       "two zones: R_p squared in lattice units squared, b = 2 (the paper's R_p >= sqrt(5) b "
+       "is 20)"},
+      {"moves", 2, 0, 4, "two zones: lattice steps the PNs make in all"},
       {"d_p", 1, 1, 3, "LBcast's delay bound d_p"},
       {"eps", 1, 0, 3, "TOBcast's extra hold eps (seed 002 line 348)"},
       {"messages", 1, 0, 3, "client messages sent in all"},
@@ -89,7 +99,7 @@ ModelDefinition vn_emulation_definition() {
     // check runs.
     vn_emulation::EmuConfig monitored = c;
     monitored.refinement_monitor = true;
-    vn_emulation::EmuConfig delivered = monitored; // the restarts of VN_0 as P7 maps them
+    vn_emulation::EmuConfig delivered = c;
     delivered.delivery_monitor = true;
     m.properties = {std::move(no_timelock), std::move(replicas),
                     custom_property("theorem-2", "Theorem 2's figures against the stated ones",
@@ -128,6 +138,12 @@ ModelDefinition vn_emulation_definition() {
                {"fails", 0},
                {"restart", ParamValue::choice("printed")}},
               "no-timelock",
+              checker::Verdict::violated},
+             // Two zones, one PN each, no motion: every figure within Theorem 2's with
+             // R_p^2 = 20; with 9 a VN's message misses the far corner of the other zone.
+             {{{"zones", 2}, {"fails", 0}, {"moves", 0}}, "theorem-2", checker::Verdict::holds},
+             {{{"zones", 2}, {"fails", 0}, {"moves", 0}, {"rp2", 9}},
+              "theorem-2",
               checker::Verdict::violated},
              // F3: a VN whose send reports its current value misses d_MMT (6 > 4).
              {{{"pns", 1}, {"messages", 3}, {"fails", 0}, {"vn", ParamValue::choice("report")}},

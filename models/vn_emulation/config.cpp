@@ -3,6 +3,12 @@
 namespace vn_emulation {
 
 std::optional<std::string> invalid(const EmuConfig& c) {
+  if (c.zones < 1 || c.zones > 2)
+    return "zones must be 1 or 2, not " + std::to_string(c.zones);
+  if (c.rp2 < 1 || c.rp2 > 40)
+    return "rp2 must be 1..40, not " + std::to_string(c.rp2);
+  if (c.moves < 0 || c.moves > 4)
+    return "moves must be 0..4, not " + std::to_string(c.moves);
   if (c.pns < 1 || c.pns > 3)
     return "pns must be 1..3, not " + std::to_string(c.pns);
   if (c.d_p < 1 || c.d_p > 3)
@@ -17,7 +23,10 @@ std::optional<std::string> invalid(const EmuConfig& c) {
 }
 
 std::string describe(const EmuConfig& c) {
-  return "pns=" + std::to_string(c.pns) + ", d_p=" + std::to_string(c.d_p) +
+  const std::string geometry = c.zones == 1 ? "one zone, "
+                                            : "two zones, rp2=" + std::to_string(c.rp2) +
+                                                  ", moves=" + std::to_string(c.moves) + ", ";
+  return geometry + "pns=" + std::to_string(c.pns) + ", d_p=" + std::to_string(c.d_p) +
          ", eps=" + std::to_string(c.eps) + ", messages=" + std::to_string(c.messages) +
          ", fails=" + std::to_string(c.fails) +
          ", start=" + (c.start == Start::cold ? "cold" : "warm") +

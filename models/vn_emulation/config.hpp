@@ -20,11 +20,17 @@ enum class Inputs { anywhere, ticks };
 enum class Vn { fifo, report };
 
 struct EmuConfig {
-  int pns = 2;      // physical nodes PN_0..PN_{pns−1}, all in the one zone B_0
+  // 1: instance I1, one zone B_0 and no geometry; 2: instances I2/I3 of the
+  // specification (§4.2), zones B_0, B_1 side by side on a lattice of 4 × 2 points, the PNs
+  // at lattice points, moving (D27), LBcast bounded by the radius R_p.
+  int zones = 1;
+  int pns = 2;      // physical nodes PN_0..PN_{pns−1}; with two zones the last starts in B_1
   int d_p = 1;      // LBcast's delay bound (002:37)
   int eps = 1;      // TOBcast's extra hold ε (002:348; "ε small", 001:46)
   int messages = 1; // client messages the CNs send in all (the budget M)
   int fails = 1;    // fail_i inputs in all (the budget F); recover_i is not counted
+  int rp2 = 20;     // two zones: R_p² in lattice units² (the paper's R_p ≥ √5 b is 20)
+  int moves = 2;    // two zones: lattice steps the PNs make in all (the budget)
   Start start = Start::warm;
   Inputs inputs = Inputs::anywhere;
   // Readings of lines the OCR or the paper leave open (README "Readings"):
@@ -59,6 +65,18 @@ struct EmuConfig {
   static constexpr int sequence_capacity = 7;  // TOBcast sequence numbers in one instant
   static constexpr int sent_capacity = 3;      // P7's monitor: VN message ids transmitted
   static constexpr int reset_capacity = 2;     // P7's monitor: resets delivered
+
+  // Two zones (D27): a lattice of columns × rows points, b = 2 lattice units; point p is
+  // at column p / rows, row p % rows; B_h holds the columns 2h, 2h + 1 (half-open
+  // squares). A PN steps to a neighbouring point at most once every move_period quanta.
+  static constexpr int columns = 4, rows = 2, zone_width = 2, move_period = 2;
+  static constexpr int points = columns * rows;
+  static int zone_of(int point) { return point / rows / zone_width; }
+  static int distance2(int p, int q) {
+    const int dx = p / rows - q / rows, dy = p % rows - q % rows;
+    return dx * dx + dy * dy;
+  }
+  bool in_range(int p, int q) const { return distance2(p, q) <= rp2; }
 
   // TOBcast delivers a packet exactly d_p + ε after it was sent (002:348).
   int hold() const { return d_p + eps; }

@@ -11,7 +11,11 @@
 //  - a client is paid when its PN receives a packet with that id (the trivial client
 //    delivers it once, D16), and let off when its PN fails;
 //  - a client message to the VN (Slots::message_wait) is let off when VN_0 restarts
-//    (delivery_restart), the VN being failed at that step;
+//    (delivery_tobcast), the VN being failed at that step;
+//  - two zones: a VN message is owed to the clients in its VN's zone, and to the
+//    neighbouring VN if it is alive at the send; that VN is paid at the first execution of
+//    the receive by one of its replicas, and lets it off when it is failed at a tick or
+//    restarts. A client that leaves the zone is let off;
 //  - the wait grows at ticks while something is owed. An id is kept, as sent, until the
 //    horizon H after it is paid (D11), so that a late copy is not a new send.
 
@@ -25,13 +29,21 @@ void delivery_transmit(const Slots& slots, State& s, const Packet& m);
 void delivery_receive(const Slots& slots, State& s, int pn, const Key& id);
 // PN_pn fails: it is owed nothing more.
 void delivery_fail(const Slots& slots, State& s, int pn);
-// VN_0 restarts (a reset's first delivery to any PN; the map of refinement.hpp): a
-// restart of a live VN is fail_0 then recover_0 (002:83, F4), so the client messages sent
-// before it are owed nothing more ("alive for the whole interval" no longer holds).
-void delivery_restart(const Slots& slots, State& s);
+// PN_pn has moved: a client that left the zone of a VN message is owed it no more.
+void delivery_move(const Slots& slots, State& s, int pn);
+// A replica executes the receive of VN message `id` (two zones): the neighbouring VN has
+// taken it (its first execution).
+void delivery_vn_executed(const Slots& slots, State& s, const Key& id);
+// TOBcast-rcv_pn delivers `entry`. VN_0 restarts at a reset's first delivery to any PN
+// (the map of refinement.hpp): a restart of a live VN is fail_0 then recover_0 (002:83,
+// F4), so the client messages sent before it are owed nothing more ("alive for the whole
+// interval" no longer holds).
+void delivery_tobcast(const Slots& slots, State& s, int pn, const Entry& entry);
 // At a tick: the waits of what is owed grow, then the ids age and old paid ones go.
 void delivery_tick(const Slots& slots, State& s);
 // The longest wait of a VN message still owed to some client (0 when none).
 int vn_to_cn_wait(const Slots& slots, const State& s);
+// The longest wait of a VN message still owed to the neighbouring VN (two zones).
+int vn_to_vn_wait(const Slots& slots, const State& s);
 
 } // namespace vn_emulation

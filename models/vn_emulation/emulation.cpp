@@ -48,13 +48,15 @@ void clear(State& s, const std::vector<PacketSlots>& queue) {
 struct Flight {
   Packet packet;
   int age = 0, todo = 0, sequence = 0;
+  int oblig = 0; // two zones (FlightSlots::oblig)
 };
 
 std::vector<Flight> load_flight(const State& s, const PnSlots& p) {
   std::vector<Flight> out;
   for (const FlightSlots& f : p.flight)
     if (!is_empty(s, f.packet))
-      out.push_back({f.packet.load(s), s[f.age], s[f.todo], s[f.sequence]});
+      out.push_back({f.packet.load(s), s[f.age], s[f.todo], s[f.sequence],
+                     f.oblig ? static_cast<int>(s[*f.oblig]) : 0});
   return out;
 }
 
@@ -65,6 +67,8 @@ void store_flight(State& s, const PnSlots& p, const std::vector<Flight>& records
     s[p.flight[k].age] = f.age;
     s[p.flight[k].todo] = f.todo;
     s[p.flight[k].sequence] = f.sequence;
+    if (p.flight[k].oblig)
+      s[*p.flight[k].oblig] = f.oblig;
   }
 }
 
@@ -99,8 +103,18 @@ int up_mask(const Slots& slots, const State& s) {
   return mask;
 }
 
-// lb-send(p)_i (002:37): every active PN may receive it and, all being in range in one
-// zone, must, within d_p (D25, D26: the sender too).
+// The up PNs within R_p of PN_i (two zones).
+int in_range_mask(const Slots& slots, const State& s, int i) {
+  int mask = 0;
+  const int from = s[*slots.pns[i].point];
+  for (int j = 0; j < slots.config.pns; ++j)
+    if (s[slots.pns[j].up] && slots.config.in_range(from, s[*slots.pns[j].point]))
+      mask |= 1 << j;
+  return mask;
+}
+
+// lb-send(p)_i (002:37): every active PN may receive it (D25), and those within R_p of
+// the sender must, within d_p (D26: the sender too; in one zone, everybody).
 void lb_send(const Slots& slots, State& s, int i, const Packet& packet, int sequence) {
   const PnSlots& p = slots.pns[i];
   std::vector<Flight> records = load_flight(s, p);
@@ -108,8 +122,17 @@ void lb_send(const Slots& slots, State& s, int i, const Packet& packet, int sequ
     slots.exceed(s, i, Bound::flight);
     return;
   }
-  records.push_back({packet, 0, up_mask(slots, s), sequence});
+  records.push_back(
+      {packet, 0, up_mask(slots, s), sequence, p.point ? in_range_mask(slots, s, i) : 0});
   store_flight(s, p, records);
+}
+
+// Appends `packet` to TOBcast-out, tagged with the VNE's zone now (D12(a)).
+void tob_append(const Slots& slots, State& s, int i, Packet packet) {
+  const PnSlots& q = slots.pns[i];
+  packet.zone = s.is_bottom(q.zone) ? 0 : static_cast<int>(s[q.zone]);
+  if (!append(s, q.tob_out, packet))
+    slots.exceed(s, i, Bound::tob_out);
 }
 
 // 002:35: "The fail_i input action sets the mode to inactive and all internal variables to
@@ -138,6 +161,42 @@ void reset_pn(const Slots& slots, State& s, int i) {
   s[p.startup_wait] = 0;
 }
 
+// The lattice point one step from `point` towards `dir` (0 west, 1 east, 2 south, 3
+// north), or -1 off the lattice.
+int step(int point, int dir) {
+  const int column = point / EmuConfig::rows + (dir == 0 ? -1 : dir == 1 ? 1 : 0);
+  const int row = point % EmuConfig::rows + (dir == 2 ? -1 : dir == 3 ? 1 : 0);
+  if (column < 0 || column >= EmuConfig::columns || row < 0 || row >= EmuConfig::rows)
+    return -1;
+  return column * EmuConfig::rows + row;
+}
+
+// PN_i steps towards `dir`. A zone change empties TOBcast_i's buffer (its entries are for
+// the old zone, D13; zone-update follows at once, being urgent). LBcast owes nothing more
+// to a pair no longer within R_p (D28: "remains within R_p for the entire interval").
+void move(const Slots& slots, State& s, int i, int dir) {
+  const PnSlots& q = slots.pns[i];
+  const int from = s[*q.point], to = step(from, dir);
+  s[*q.point] = to;
+  s[*slots.moves_left] = s[*slots.moves_left] - 1;
+  s[*q.move_wait] = EmuConfig::move_period;
+  if (EmuConfig::zone_of(from) != EmuConfig::zone_of(to)) {
+    store_buffer(s, q, {});
+    s[q.startup_wait] = 0; // d_r counts the time it remains in one zone (002:83)
+  }
+  const int n = slots.config.pns;
+  for (int j = 0; j < n; ++j) {
+    std::vector<Flight> records = load_flight(s, slots.pns[j]);
+    for (Flight& f : records)
+      for (int k = 0; k < n; ++k)
+        if (((f.oblig >> k) & 1) &&
+            !slots.config.in_range(s[*slots.pns[j].point], s[*slots.pns[k].point]))
+          f.oblig &= ~(1 << k);
+    store_flight(s, slots.pns[j], records);
+  }
+  delivery_move(slots, s, i);
+}
+
 // Adds a VN message id to CN_i's seen ids; false when it was there.
 bool see(const Slots& slots, State& s, int i, const Key& id) {
   const PnSlots& p = slots.pns[i];
@@ -158,24 +217,37 @@ void advance_packet(State& s, const PacketSlots& p) {
 // grows, the instant's sequence numbers and client sends start again, and old keys go.
 void tick(const Slots& slots, State& s) {
   const EmuConfig& c = slots.config;
-  const std::optional<VnValue> abstract = abstract_value(slots, s);
-  monitor_tick(slots, s, abstract.has_value());
-  for (const PnSlots& p : slots.pns)
-    s[p.startup_wait] =
-        s[p.up] && !abstract ? std::min(s[p.startup_wait] + 1, 2 * c.stated_d_r()) : 0;
-  if (abstract && abstract->can_send()) {
-    const bool sent = optional_value(s, slots.task_sseq) != abstract->sseq;
-    s[slots.task_wait] =
-        std::min((sent ? 0 : static_cast<int>(s[slots.task_wait])) + 1, c.age_cap());
-  } else {
-    s[slots.task_wait] = 0;
+  std::vector<std::optional<VnValue>> abstract;
+  for (int h = 0; h < c.zones; ++h)
+    abstract.push_back(abstract_value(slots, s, h));
+  monitor_tick(slots, s, abstract[0].has_value());
+  for (int i = 0; i < c.pns; ++i) {
+    const PnSlots& p = slots.pns[i];
+    s[p.startup_wait] = s[p.up] && !abstract[point_zone(slots, s, i)]
+                            ? std::min(s[p.startup_wait] + 1, 2 * c.stated_d_r())
+                            : 0;
+    if (p.move_wait && s[*p.move_wait] > 0)
+      s[*p.move_wait] = s[*p.move_wait] - 1;
   }
-  set_optional(s, slots.task_sseq, abstract ? abstract->sseq : -1);
-  for (const auto& wait : slots.message_wait)
-    if (!abstract)
+  for (int h = 0; h < c.zones; ++h) {
+    const std::optional<VnValue>& vn = abstract[h];
+    if (vn && vn->can_send()) {
+      const bool sent = optional_value(s, slots.task_sseq[h]) != vn->sseq;
+      s[slots.task_wait[h]] =
+          std::min((sent ? 0 : static_cast<int>(s[slots.task_wait[h]])) + 1, c.age_cap());
+    } else {
+      s[slots.task_wait[h]] = 0;
+    }
+    set_optional(s, slots.task_sseq[h], vn ? vn->sseq : -1);
+  }
+  for (std::size_t m = 0; m < slots.message_wait.size(); ++m) {
+    const auto& wait = slots.message_wait[m];
+    const int h = slots.message_zone.empty() ? 0 : static_cast<int>(s[slots.message_zone[m]]);
+    if (!abstract[h])
       s.set_bottom(wait);
     else if (!s.is_bottom(wait))
       s[wait] = std::min(s[wait] + 1, c.age_cap());
+  }
 
   for (const PnSlots& p : slots.pns) {
     s.advance(p.pending_join);
@@ -192,6 +264,14 @@ void tick(const Slots& slots, State& s) {
       s.advance(b.age);
       advance_packet(s, b.packet);
     }
+    if (c.zones == 2) { // a packet d_p old owes nobody any more (LBcast's deadline)
+      std::vector<Flight> records = load_flight(s, p), kept;
+      for (const Flight& f : records)
+        if (f.age < c.d_p)
+          kept.push_back(f);
+      if (kept.size() != records.size())
+        store_flight(s, p, kept);
+    }
     for (const FlightSlots& f : p.flight) {
       if (is_empty(s, f.packet))
         continue; // an empty place stays all zero (one state for one situation)
@@ -205,6 +285,37 @@ void tick(const Slots& slots, State& s) {
   }
   monitor_age(slots, s);
   delivery_tick(slots, s);
+}
+
+// Two zones (I2, I3 of the specification): the start states are every placement of the
+// PNs at lattice points of their start zones (the last PN in B_1, the others in B_0), each
+// warm VNE with its zone's h; otherwise as declared.
+tioa::StartSet placements(const tioa::Automaton& a, const Slots& slots) {
+  const std::uint32_t words = a.words();
+  std::vector<tioa::Word> declared(words, 0), buffer(words, 0);
+  tioa::StartSet::declared(a.layout()).enumerate(buffer.data(), 0, [&] { declared = buffer; });
+  const int n = slots.config.pns;
+  const auto start_zone = [n](int i) { return n >= 2 && i == n - 1 ? 1 : 0; };
+  const int per_zone = EmuConfig::zone_width * EmuConfig::rows;
+  std::vector<tioa::Word> states;
+  int combinations = 1;
+  for (int i = 0; i < n; ++i)
+    combinations *= per_zone;
+  for (int code = 0; code < combinations; ++code) {
+    std::vector<tioa::Word> state = declared;
+    State st(state.data(), 0);
+    for (int i = 0, rest = code; i < n; ++i, rest /= per_zone) {
+      const int h = start_zone(i);
+      st[*slots.pns[i].point] = h * per_zone + rest % per_zone;
+      if (slots.config.start == Start::warm)
+        st[slots.pns[i].zone] = h;
+    }
+    states.insert(states.end(), state.begin(), state.end());
+  }
+  return tioa::StartSet::listed(a.layout().bits(), words, std::move(states),
+                                "every placement of the PNs at lattice points of their start "
+                                "zones (" +
+                                    std::to_string(combinations) + " states)");
 }
 
 // What each step may read and write (tioa/footprint.hpp), for the zero-time reduction: a
@@ -243,6 +354,7 @@ void declare_footprints(tioa::Automaton& a, const std::shared_ptr<const Slots>& 
     declare("TOBcast-rcv" + id, [=](const Params&, tioa::Footprint& f) {
       block(f, own);
       monitor(f);
+      delivery(f);
       if (slots->delivery)
         for (const auto& wait : slots->message_wait)
           f.writes(wait);
@@ -312,13 +424,14 @@ Emulation emulation(const EmuConfig& c) {
     // reset-sent, proposed and completed-actions describe the old zone's VN and are cleared.
     a.internal("zone-update" + id)
         .pre([slots, i](const State& s, const Params&) {
-          return !slots->pn_past_bound(s, i) && s[slots->pns[i].up] &&
-                 s.is_bottom(slots->pns[i].zone);
+          const PnSlots& q = slots->pns[i];
+          return !slots->pn_past_bound(s, i) && s[q.up] &&
+                 (s.is_bottom(q.zone) || s[q.zone] != point_zone(*slots, s, i));
         })
         .eff([slots, i](State& s, const Params&) {
           const PnSlots& q = slots->pns[i];
           s[q.status] = Status::idle;
-          s[q.zone] = 0;
+          s[q.zone] = point_zone(*slots, s, i);
           q.value.store(s, VnValue{});
           clear(s, q.pending);
           s.set_bottom(q.join_id);
@@ -339,8 +452,7 @@ Emulation emulation(const EmuConfig& c) {
           Packet req;
           req.kind = Kind::join_req;
           req.age = 0;
-          if (!append(s, q.tob_out, req))
-            slots->exceed(s, i, Bound::tob_out);
+          tob_append(*slots, s, i, req);
         });
 
     // Internal restart_{i,h} (002:430–434): status = listening ∧ x ∈ B_h ∧ realtime =
@@ -368,8 +480,7 @@ Emulation emulation(const EmuConfig& c) {
           const PnSlots& q = slots->pns[i];
           Packet reset;
           reset.kind = Kind::reset;
-          if (!append(s, q.tob_out, reset))
-            slots->exceed(s, i, Bound::tob_out);
+          tob_append(*slots, s, i, reset);
           s[q.reset_sent] = true;
         });
 
@@ -390,8 +501,7 @@ Emulation emulation(const EmuConfig& c) {
           suggestion.last = s[q.value.out_last[0]];
           suggestion.age = 0;
           suggestion.from = i;
-          if (!append(s, q.tob_out, suggestion))
-            slots->exceed(s, i, Bound::tob_out);
+          tob_append(*slots, s, i, suggestion);
           s[q.proposed] = true;
         });
 
@@ -408,18 +518,25 @@ Emulation emulation(const EmuConfig& c) {
           const Packet act = pop_front(s, q.pending);
           Completed done = slots->completed(s, i);
           VnValue value = q.value.load(s);
+          // A receive is of a client message (no id age: its key is a bit, D10) or, with
+          // two zones, of VN_g's message ⟨age, from⟩ (its key is that id, kept with the
+          // send keys: a PN proposes in one zone at an instant, so ids do not clash).
           const bool receive = act.kind == Kind::simulate_receive;
+          const bool client = receive && act.age < 0;
           const Key key{act.age, act.from};
-          const bool known = receive ? ((done.received >> act.message) & 1) != 0 : done.has(key);
+          const bool known = client ? ((done.received >> act.message) & 1) != 0 : done.has(key);
           const bool enabled = receive || value.send_enabled(act.count, act.last);
           const auto record = [&] {
-            if (receive)
+            if (client)
               done.received |= 1 << act.message;
             else if (!done.add(key))
               slots->exceed(s, i, Bound::keys);
           };
           if (!known && enabled) {
-            if (receive) {
+            if (receive && !client) { // the neighbour's report: nbr := v (§1.7)
+              value.nbr = act.count;
+              delivery_vn_executed(*slots, s, key);
+            } else if (receive) {
               if (!value.can_receive(slots->config.vn)) {
                 slots->exceed(s, i, Bound::out);
                 return;
@@ -435,6 +552,7 @@ Emulation emulation(const EmuConfig& c) {
               message.last = act.last;
               message.age = act.age; // D10: the VN message's id is the suggestion's oid
               message.from = act.from;
+              message.zone = s[q.zone];
               if (!append(s, q.local_out, message))
                 slots->exceed(s, i, Bound::local_out);
             }
@@ -463,10 +581,9 @@ Emulation emulation(const EmuConfig& c) {
           Packet ack;
           ack.kind = Kind::join_ack;
           ack.age = s[q.pending_join];
-          ack.value = q.value.load(s).code(slots->config.pns);
+          ack.value = q.value.load(s).code(slots->config.pns, slots->config.zones);
           ack.done = slots->completed(s, i);
-          if (!append(s, q.tob_out, ack))
-            slots->exceed(s, i, Bound::tob_out);
+          tob_append(*slots, s, i, ack);
           s[q.completed_join] = s[q.pending_join];
         });
 
@@ -520,10 +637,8 @@ Emulation emulation(const EmuConfig& c) {
           const Packet m = head.packet;
           entries.erase(entries.begin());
           store_buffer(s, q, entries);
-          // Before the delivery changes the status:
-          const bool first_delivery = monitor_delivery(*slots, s, i, head);
-          if (first_delivery && m.kind == Kind::reset)
-            delivery_restart(*slots, s);
+          monitor_delivery(*slots, s, i, head); // before the delivery changes the status
+          delivery_tobcast(*slots, s, i, head);
           const Status status = s[q.status];
           switch (m.kind) {
           case Kind::simulate_receive:
@@ -549,7 +664,7 @@ Emulation emulation(const EmuConfig& c) {
             const int join_id = optional_value(s, q.join_id);
             if (status == Status::listening && join_id >= 0 && m.age <= join_id) {
               s[q.status] = Status::active;
-              q.value.store(s, VnValue::from_code(m.value, slots->config.pns));
+              q.value.store(s, VnValue::from_code(m.value, slots->config.pns, slots->config.zones));
               slots->set_completed(s, i, m.done);
               s[q.proposed] = false;
             }
@@ -581,13 +696,17 @@ Emulation emulation(const EmuConfig& c) {
           std::vector<Flight> records = load_flight(s, sender);
           Flight& record = records[m[1]];
           record.todo &= ~(1 << i);
+          record.oblig &= ~(1 << i);
           const Flight got = record;
           if (record.todo == 0)
             records.erase(records.begin() + m[1]);
           store_flight(s, sender, records);
           const Packet& p = got.packet;
           if (through_tobcast(p.kind)) {
-            // TOBcast_i keeps it until ts + d_p + ε (one zone: every packet is for B_h).
+            // TOBcast_i keeps it until ts + d_p + ε if it is tagged with the zone PN_i
+            // stands in (D13; with one zone every packet is).
+            if (p.zone != point_zone(*slots, s, i))
+              return;
             std::vector<Entry> entries = load_buffer(*slots, s, q);
             if (entries.size() == q.buffer.size()) {
               slots->exceed(s, i, Bound::buffer);
@@ -597,19 +716,31 @@ Emulation emulation(const EmuConfig& c) {
             store_buffer(s, q, entries);
           } else if (p.kind == Kind::client_message) {
             // Input receive(m)_{i,h} (002:414): TOBcast-out ∪ {⟨simulate, ⟨receive, m⟩, ⊥⟩},
-            // no status guard; nothing while h = ⊥ (D14). The client drops it (002:85).
-            if (!s.is_bottom(q.zone)) {
+            // no status guard; nothing while h = ⊥ (D14), and only a message its CN sent
+            // from B_h (the zone reading of D14). The client drops it (002:85).
+            if (!s.is_bottom(q.zone) && p.zone == s[q.zone]) {
               Packet suggestion = p;
               suggestion.kind = Kind::simulate_receive;
               suggestion.age = -1;
-              if (!append(s, q.tob_out, suggestion))
-                slots->exceed(s, i, Bound::tob_out);
+              tob_append(*slots, s, i, suggestion);
             }
           } else if (p.kind == Kind::vn_message) {
-            // The trivial client delivers a VN message once (D16); VNE_i drops its own
-            // zone's VN messages (D14).
-            see(*slots, s, i, Key{p.age, p.from});
-            delivery_receive(*slots, s, i, Key{p.age, p.from});
+            // The trivial client delivers a message of its zone's VN once (D16). VNE_i
+            // drops its own zone's VN messages and forwards a neighbour's as an input of
+            // its VN (D14; in the 1 × 2 grid the two zones are neighbours).
+            const Key vn_id{p.age, p.from};
+            if (p.zone == point_zone(*slots, s, i)) {
+              see(*slots, s, i, vn_id);
+              delivery_receive(*slots, s, i, vn_id);
+            }
+            if (!s.is_bottom(q.zone) && p.zone != s[q.zone]) {
+              Packet suggestion;
+              suggestion.kind = Kind::simulate_receive;
+              suggestion.age = p.age;
+              suggestion.from = p.from;
+              suggestion.count = p.count;
+              tob_append(*slots, s, i, suggestion);
+            }
           }
         });
 
@@ -635,6 +766,9 @@ Emulation emulation(const EmuConfig& c) {
           m.kind = Kind::client_message;
           m.message = message;
           m.from = i;
+          m.zone = point_zone(*slots, s, i); // owed by the VN of the CN's zone
+          if (!slots->message_zone.empty())
+            s[slots->message_zone[message]] = m.zone;
           lb_send(*slots, s, i, m, 0);
         });
     a.output("fail" + id)
@@ -650,6 +784,7 @@ Emulation emulation(const EmuConfig& c) {
             std::vector<Flight> records = load_flight(s, sender), kept;
             for (Flight f : records) {
               f.todo &= ~(1 << i);
+              f.oblig &= ~(1 << i);
               if (f.todo != 0)
                 kept.push_back(f);
             }
@@ -661,9 +796,23 @@ Emulation emulation(const EmuConfig& c) {
           return env_may(s) && !s[slots->pns[i].up];
         })
         .eff([slots, i](State& s, const Params&) { s[slots->pns[i].up] = true; });
+
+    // Two zones: RW moves PN_i one lattice step (D27), only where time may pass, at most
+    // once every move_period quanta, within the budget; a failed PN stands still (002:35).
+    if (c.zones == 2)
+      a.output("move" + id, {{"dir", 0, 3}})
+          .pre([slots, i](const State& s, const Params& d) {
+            const PnSlots& q = slots->pns[i];
+            return !slots->pn_past_bound(s, i) && s[q.up] && s[*slots->moves_left] > 0 &&
+                   s[*q.move_wait] == 0 && step(s[*q.point], d[0]) >= 0 && !urgent(*slots, s);
+          })
+          .eff([slots, i](State& s, const Params& d) { move(*slots, s, i, d[0]); });
   }
 
-  declare_footprints(a, slots);
+  if (c.zones == 1) // two zones: no footprints, so the reduction expands every state in full
+    declare_footprints(a, slots);
+  else
+    a.set_start(placements(a, *slots));
   a.trajectories([slots](State& s) { tick(*slots, s); },
                  [slots](const State& s) { return urgent(*slots, s); });
   return {std::move(a), slots};

@@ -11,9 +11,18 @@ bool adoptable(const Packet& p, int join_age) {
 
 } // namespace
 
+int point_zone(const Slots& slots, const State& s, int i) {
+  const PnSlots& p = slots.pns[i];
+  return p.point ? EmuConfig::zone_of(s[*p.point]) : 0;
+}
+
 bool in_zone(const Slots& slots, const State& s, int i) {
   const PnSlots& p = slots.pns[i];
-  return s[p.up] && !s.is_bottom(p.zone);
+  return s[p.up] && !s.is_bottom(p.zone) && s[p.zone] == point_zone(slots, s, i);
+}
+
+int vne_zone(const Slots& slots, const State& s, int i) {
+  return in_zone(slots, s, i) ? static_cast<int>(s[slots.pns[i].zone]) : -1;
 }
 
 bool pn_urgent(const Slots& slots, const State& s, int i) {
@@ -21,7 +30,7 @@ bool pn_urgent(const Slots& slots, const State& s, int i) {
   const EmuConfig& c = slots.config;
   if (!s[p.up])
     return false;
-  if (s.is_bottom(p.zone)) // zone-update: x ∉ B_⊥
+  if (s.is_bottom(p.zone) || s[p.zone] != point_zone(slots, s, i)) // zone-update: x ∉ B_h
     return true;
   const Status status = s[p.status];
   if (status == Status::idle) // join
@@ -57,7 +66,7 @@ bool urgent(const Slots& slots, const State& s) {
       return true;
     for (const FlightSlots& f : slots.pns[i].flight)
       if (s[f.packet.kind] != static_cast<int>(Kind::none) && s[f.age] == slots.config.d_p &&
-          s[f.todo] != 0)
+          s[f.oblig ? *f.oblig : f.todo] != 0) // LBcast's deadline for the obliged
         return true;
   }
   return false;
@@ -65,18 +74,18 @@ bool urgent(const Slots& slots, const State& s) {
 
 namespace {
 
-// The payload of a join-ack that a listening replica will adopt, if any.
-std::optional<VnValue> adoptable_payload(const Slots& slots, const State& s) {
+// The payload of a join-ack that a listening replica of zone h will adopt, if any.
+std::optional<VnValue> adoptable_payload(const Slots& slots, const State& s, int h) {
   const int n = slots.config.pns;
   for (int j = 0; j < n; ++j) {
     const PnSlots& p = slots.pns[j];
-    if (!in_zone(slots, s, j) || s[p.status] != Status::listening)
+    if (vne_zone(slots, s, j) != h || s[p.status] != Status::listening)
       continue;
     const int join_age = optional_value(s, p.join_id);
     for (const BufferSlots& b : p.buffer) {
       const Packet packet = b.packet.load(s);
       if (adoptable(packet, join_age))
-        return VnValue::from_code(packet.value, n);
+        return VnValue::from_code(packet.value, n, slots.config.zones);
     }
     for (int i = 0; i < n; ++i)
       for (const FlightSlots& f : slots.pns[i].flight) {
@@ -84,7 +93,7 @@ std::optional<VnValue> adoptable_payload(const Slots& slots, const State& s) {
           continue;
         const Packet packet = f.packet.load(s);
         if (adoptable(packet, join_age))
-          return VnValue::from_code(packet.value, n);
+          return VnValue::from_code(packet.value, n, slots.config.zones);
       }
   }
   return std::nullopt;
@@ -92,15 +101,15 @@ std::optional<VnValue> adoptable_payload(const Slots& slots, const State& s) {
 
 } // namespace
 
-std::optional<VnValue> abstract_value(const Slots& slots, const State& s) {
+std::optional<VnValue> abstract_value(const Slots& slots, const State& s, int h) {
   for (int i = 0; i < slots.config.pns; ++i)
-    if (in_zone(slots, s, i) && s[slots.pns[i].status] == Status::active)
+    if (vne_zone(slots, s, i) == h && s[slots.pns[i].status] == Status::active)
       return slots.pns[i].value.load(s);
-  return adoptable_payload(slots, s);
+  return adoptable_payload(slots, s, h);
 }
 
-bool vn_alive(const Slots& slots, const State& s) {
-  return abstract_value(slots, s).has_value();
+bool vn_alive(const Slots& slots, const State& s, int h) {
+  return abstract_value(slots, s, h).has_value();
 }
 
 std::string describe(const VnValue& v) {
@@ -116,22 +125,23 @@ std::string describe(const VnValue& v) {
 std::optional<std::string> replica_failure(const Slots& slots, const State& s) {
   if (urgent(slots, s))
     return std::nullopt;
-  std::optional<int> first;
+  std::optional<int> first[2];
   for (int i = 0; i < slots.config.pns; ++i) {
     const PnSlots& p = slots.pns[i];
-    if (!in_zone(slots, s, i) || s[p.status] != Status::active)
+    const int h = vne_zone(slots, s, i);
+    if (h < 0 || s[p.status] != Status::active)
       continue;
     if (s[p.pending[0].kind] != static_cast<int>(Kind::none))
       return "PN_" + std::to_string(i) + " is active with actions pending where time passes";
-    if (!first) {
-      first = i;
+    if (!first[h]) {
+      first[h] = i;
       continue;
     }
-    const VnValue a = slots.pns[*first].value.load(s), b = p.value.load(s);
+    const VnValue a = slots.pns[*first[h]].value.load(s), b = p.value.load(s);
     if (a != b)
-      return "the active replicas PN_" + std::to_string(*first) + " and PN_" + std::to_string(i) +
-             " hold different VN states where time passes: (" + describe(a) + ") and (" +
-             describe(b) + ")";
+      return "the active replicas PN_" + std::to_string(*first[h]) + " and PN_" +
+             std::to_string(i) + " hold different VN states where time passes: (" + describe(a) +
+             ") and (" + describe(b) + ")";
   }
   return std::nullopt;
 }

@@ -14,8 +14,12 @@ inline bool later_id(int age, int than) {
   return age >= 0 && (than < 0 || age < than);
 }
 
-// PN_i is up and its VNE emulates zone 0 (x ∈ B_h with h = 0, one zone).
+// The zone PN_i stands in (RW's x_i; 0 with one zone).
+int point_zone(const Slots& slots, const State& s, int i);
+// PN_i is up and its VNE's zone h is where it stands (x ∈ B_h).
 bool in_zone(const Slots& slots, const State& s, int i);
+// h when in_zone(i), else -1.
+int vne_zone(const Slots& slots, const State& s, int i);
 
 // Some locally controlled action of PN_i is enabled (002:410: "Stop when any
 // Precondition is satisfied"; TOBcast delivers exactly at ts + d_p + ε).
@@ -24,14 +28,14 @@ bool pn_urgent(const Slots& slots, const State& s, int i);
 // left). (A state past the model's bounds is not expanded by the checks.)
 bool urgent(const Slots& slots, const State& s);
 
-// VN_0 is alive (D18, §1.8): an up VNE of the zone is active, or a listening one will
+// VN_h is alive (D18, §1.8): an up VNE of the zone is active, or a listening one will
 // adopt a join-ack already sent (in its buffer, or in flight to it).
-bool vn_alive(const Slots& slots, const State& s);
-// val_abs (§1.8): the val of the first active replica, else of the join-ack a listening
-// replica will adopt; nullopt when VN_0 is failed.
-std::optional<VnValue> abstract_value(const Slots& slots, const State& s);
+bool vn_alive(const Slots& slots, const State& s, int h = 0);
+// val_abs (§1.8): the val of the first active replica of zone h, else of the join-ack a
+// listening replica will adopt; nullopt when VN_h is failed.
+std::optional<VnValue> abstract_value(const Slots& slots, const State& s, int h = 0);
 
-// P1 (§4.3) at a state where time can pass: two active replicas with different vals, or
+// P1 (§4.3) at a state where time can pass: two active replicas of a zone with different vals, or
 // an active replica with actions still pending; in words. nullopt when it holds or when
 // time cannot pass here.
 std::optional<std::string> replica_failure(const Slots& slots, const State& s);

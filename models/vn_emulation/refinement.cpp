@@ -84,24 +84,23 @@ Reference replay(const Slots& slots, const State& s) {
 
 } // namespace
 
-bool monitor_delivery(const Slots& slots, State& s, int pn, const Entry& entry) {
+void monitor_delivery(const Slots& slots, State& s, int pn, const Entry& entry) {
   if (!slots.refinement)
-    return false;
+    return;
   const RefinementSlots& r = *slots.refinement;
   std::vector<Entry> taken = load_taken(slots, r, s);
   const Entry id = remembered(entry);
   if (std::any_of(taken.begin(), taken.end(), [&](const Entry& e) { return same(e, id); }))
-    return false; // taken at another PN's delivery
+    return; // taken at another PN's delivery
   if (taken.size() == r.taken.size()) {
     slots.exceed(s, pn, Bound::taken);
-    return false;
+    return;
   }
   taken.push_back(id);
   store_taken(r, s, std::move(taken));
   // P6: a reset delivered while VN_0 is alive, as it was at the last tick.
   if (entry.packet.kind == Kind::reset && s[r.was_alive] && vn_alive(slots, s))
     s[r.live_restart] = true;
-  return true;
 }
 
 void monitor_transmit(const Slots& slots, State& s, int pn, const Packet& m) {

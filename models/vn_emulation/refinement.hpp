@@ -38,9 +38,8 @@
 namespace vn_emulation {
 
 // TOBcast-rcv_pn delivers `entry` (any kind; the monitor takes the TOBcast messages the
-// abstract VN reads at their first delivery). True when this is the first delivery of the
-// message to any PN (false without the monitor).
-bool monitor_delivery(const Slots& slots, State& s, int pn, const Entry& entry);
+// abstract VN reads at their first delivery).
+void monitor_delivery(const Slots& slots, State& s, int pn, const Entry& entry);
 // send_pn transmits VN message `m` (kind vn_message).
 void monitor_transmit(const Slots& slots, State& s, int pn, const Packet& m);
 // At a tick, before the ages grow: `alive` is VN_0's liveness where time passes.

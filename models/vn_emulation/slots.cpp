@@ -26,9 +26,10 @@ PacketSlots packet_slots(tioa::Automaton& a, const std::string& name, const EmuC
   p.count = a.integer(name + ".count", 0, EmuConfig::counter_modulus - 1, 0);
   p.last = a.integer(name + ".last", 0, clients - 1, 0);
   p.age = age_variable(a, name + ".age", c);
+  p.zone = a.integer(name + ".zone", 0, c.zones - 1, 0);
   p.payload = payload;
   if (payload) {
-    p.value = a.integer(name + ".val", 0, VnValue::codes(clients) - 1, 0);
+    p.value = a.integer(name + ".val", 0, VnValue::codes(clients, c.zones) - 1, 0);
     p.received = a.integer(name + ".completed", 0, (1 << c.messages) - 1, 0);
     for (int k = 0; k < EmuConfig::key_capacity; ++k) {
       p.key_age[k] = age_variable(a, at(name + ".key_age", k), c);
@@ -38,7 +39,8 @@ PacketSlots packet_slots(tioa::Automaton& a, const std::string& name, const EmuC
   return p;
 }
 
-ValueSlots value_slots(tioa::Automaton& a, const std::string& name, int clients) {
+ValueSlots value_slots(tioa::Automaton& a, const std::string& name, const EmuConfig& c) {
+  const int clients = c.pns;
   ValueSlots v;
   v.count = a.integer(name + ".count", 0, EmuConfig::counter_modulus - 1, 0);
   v.last = a.optional_integer(name + ".last", 0, clients - 1);
@@ -48,6 +50,8 @@ ValueSlots value_slots(tioa::Automaton& a, const std::string& name, int clients)
     v.out_last[k] = a.integer(at(name + ".out_last", k), 0, clients - 1, 0);
   }
   v.sseq = a.integer(name + ".sseq", 0, EmuConfig::send_modulus - 1, 0);
+  if (c.zones == 2)
+    v.nbr = a.optional_integer(name + ".nbr", 0, EmuConfig::counter_modulus - 1);
   return v;
 }
 
@@ -81,6 +85,7 @@ Packet PacketSlots::load(const State& s) const {
   p.count = s[count];
   p.last = s[last];
   p.age = optional_value(s, age);
+  p.zone = s[zone];
   if (payload) {
     p.value = s[value];
     p.done.received = s[received];
@@ -97,6 +102,7 @@ void PacketSlots::store(State& s, const Packet& p) const {
   s[count] = p.count;
   s[last] = p.last;
   set_optional(s, age, p.age);
+  s[zone] = p.zone;
   if (payload) {
     s[value] = p.value;
     s[received] = p.done.received;
@@ -117,6 +123,8 @@ VnValue ValueSlots::load(const State& s) const {
     v.out_last[k] = s[out_last[k]];
   }
   v.sseq = s[sseq];
+  if (nbr)
+    v.nbr = optional_value(s, *nbr);
   return v;
 }
 
@@ -129,6 +137,8 @@ void ValueSlots::store(State& s, const VnValue& v) const {
     s[out_last[k]] = v.out_last[k];
   }
   s[sseq] = v.sseq;
+  if (nbr)
+    set_optional(s, *nbr, v.nbr);
 }
 
 Completed Slots::completed(const State& s, int pn) const {
@@ -203,8 +213,9 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
     p.up = a.boolean(pn + ".up", true);
     p.status = a.enumeration<Status>(pn + ".status", {"idle", "joining", "listening", "active"},
                                      Status::active);
-    p.zone = a.optional_integer(pn + ".h", 0, 0, warm ? std::optional<int>(0) : std::nullopt);
-    p.value = value_slots(a, pn + ".val", c.pns);
+    p.zone =
+        a.optional_integer(pn + ".h", 0, c.zones - 1, warm ? std::optional<int>(0) : std::nullopt);
+    p.value = value_slots(a, pn + ".val", c);
     p.pending_join = age_variable(a, pn + ".pending_join", c);
     p.completed_join = age_variable(a, pn + ".completed_join", c);
     p.join_id = age_variable(a, pn + ".join_id", c);
@@ -239,6 +250,10 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
                              {"none", "pending", "tob_out", "local_out", "flight", "buffer", "keys",
                               "seen", "sequence", "out", "sent_ids", "taken", "delivery_ids"},
                              Bound::none);
+    if (c.zones == 2) {
+      p.point = a.integer(pn + ".x", 0, EmuConfig::points - 1, 0); // the start set places it
+      p.move_wait = a.integer(pn + ".move_wait", 0, EmuConfig::move_period, 0);
+    }
     p.block.bits = a.layout().bits() - p.block.offset;
     slots->pns.push_back(std::move(p));
   }
@@ -249,19 +264,31 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
     p.flight_block.offset = a.layout().bits();
     for (int k = 0; k < EmuConfig::flight_capacity; ++k) {
       const std::string name = at("LBcast.from_" + std::to_string(i), k);
-      p.flight.push_back({packet_slots(a, name, c, true), a.integer(name + ".elapsed", 0, c.d_p, 0),
-                          a.integer(name + ".todo", 0, (1 << c.pns) - 1, 0),
-                          a.integer(name + ".seq", 0, EmuConfig::sequence_capacity, 0)});
+      FlightSlots f{packet_slots(a, name, c, true), a.integer(name + ".elapsed", 0, c.d_p, 0),
+                    a.integer(name + ".todo", 0, (1 << c.pns) - 1, 0),
+                    a.integer(name + ".seq", 0, EmuConfig::sequence_capacity, 0), std::nullopt};
+      if (c.zones == 2)
+        f.oblig = a.integer(name + ".oblig", 0, (1 << c.pns) - 1, 0);
+      p.flight.push_back(std::move(f));
     }
     p.flight_block.bits = a.layout().bits() - p.flight_block.offset;
   }
   slots->messages_left = a.integer("Env.messages_left", 0, c.messages, c.messages);
   slots->fails_left = a.integer("Env.fails_left", 0, c.fails, c.fails);
-  slots->task_wait = a.integer("Monitor.task_wait", 0, c.age_cap(), 0);
-  slots->task_sseq = a.optional_integer("Monitor.task_sseq", 0, EmuConfig::send_modulus - 1);
-  for (int m = 0; m < c.messages; ++m)
+  if (c.zones == 2)
+    slots->moves_left = a.integer("Env.moves_left", 0, c.moves, c.moves);
+  for (int h = 0; h < c.zones; ++h) {
+    const std::string zone = h == 0 ? "" : "_" + std::to_string(h); // B_0's keep their names
+    slots->task_wait.push_back(a.integer("Monitor.task_wait" + zone, 0, c.age_cap(), 0));
+    slots->task_sseq.push_back(
+        a.optional_integer("Monitor.task_sseq" + zone, 0, EmuConfig::send_modulus - 1));
+  }
+  for (int m = 0; m < c.messages; ++m) {
     slots->message_wait.push_back(
         a.optional_integer(at("Monitor.message_wait", m), 0, c.age_cap()));
+    if (c.zones == 2)
+      slots->message_zone.push_back(a.integer(at("Monitor.message_zone", m), 0, 1, 0));
+  }
   slots->check_ghosts = a.layout().bits();
   if (c.delivery_monitor) {
     DeliverySlots d;
@@ -269,16 +296,24 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
     for (int k = 0; k < EmuConfig::sent_capacity; ++k) {
       d.age[k] = age_variable(a, at("Monitor.vn_sent_age", k), c);
       d.from[k] = a.integer(at("Monitor.vn_sent_from", k), 0, c.pns - 1, 0);
-      d.owed[k] = a.integer(at("Monitor.vn_owed", k), 0, (1 << c.pns) - 1, 0);
+      d.owed[k] = a.integer(at("Monitor.vn_owed", k), 0, (1 << (c.pns + 1)) - 1, 0);
       d.wait[k] = a.optional_integer(at("Monitor.vn_wait", k), 0, c.age_cap());
+      if (c.zones == 2) {
+        d.zone.push_back(a.integer(at("Monitor.vn_zone", k), 0, 1, 0));
+        d.vn_wait.push_back(a.optional_integer(at("Monitor.vn_vn_wait", k), 0, c.age_cap()));
+      }
     }
+    // At most one reset a PN a quantum (restart fires once a join, D7).
+    for (int k = 0; k < c.pns; ++k)
+      d.reset_tag.push_back(
+          a.integer(at("Monitor.reset_tag", k), 0, c.pns * (EmuConfig::sequence_capacity + 1), 0));
     d.block.bits = a.layout().bits() - d.block.offset;
     slots->delivery = d;
   }
   if (c.refinement_monitor) {
     RefinementSlots r;
     r.block.offset = a.layout().bits();
-    r.abstract = value_slots(a, "Monitor.val_abs", c.pns);
+    r.abstract = value_slots(a, "Monitor.val_abs", c);
     r.done_received = a.integer("Monitor.done_received", 0, (1 << c.messages) - 1, 0);
     for (int k = 0; k < EmuConfig::key_capacity; ++k) {
       r.done_age[k] = age_variable(a, at("Monitor.done_age", k), c);

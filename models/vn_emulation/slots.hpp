@@ -59,6 +59,10 @@ struct Completed {
 struct Packet {
   Kind kind = Kind::none;
   int message = 0, from = 0, count = 0, last = 0;
+  // The zone of a TOBcast message (the sender VNE's h when it was queued, D12(a)), of a
+  // client message (its CN's zone at the send) or of a VN message (its VN's). Always 0
+  // with one zone.
+  int zone = 0;
   int age = -1;   // the oid's or id's age; -1 when it has none
   int value = 0;  // join-ack: VnValue::code of the payload's val
   Completed done; // join-ack: the payload's completed-actions
@@ -67,7 +71,7 @@ struct Packet {
 };
 
 struct PacketSlots {
-  Variable<int> kind, message, from, count, last, age;
+  Variable<int> kind, message, from, count, last, age, zone;
   // Only where join-acks can be (TOBcast-out, LBcast, TOBcast's buffer).
   bool payload = false;
   Variable<int> value, received;
@@ -83,6 +87,9 @@ struct PacketSlots {
 struct FlightSlots {
   PacketSlots packet;
   Variable<int> age, todo, sequence;
+  // Two zones: the PNs that must still receive it (in todo, up and within R_p of the
+  // sender throughout, D28); with one zone everybody in todo must.
+  std::optional<Variable<int>> oblig;
 };
 
 // An entry of TOBcast_i's hold buffer: ⟨ts, jr, sender, seq, m⟩ (D12).
@@ -100,6 +107,7 @@ struct Entry {
 struct ValueSlots {
   Variable<int> count, last, length, sseq;
   std::array<Variable<int>, EmuConfig::out_capacity> out_count, out_last;
+  std::optional<Variable<int>> nbr; // two zones
   VnValue load(const State& s) const;
   void store(State& s, const VnValue& v) const;
 };
@@ -153,6 +161,9 @@ struct PnSlots {
   // that a step reads only its own PN's (for the zero-time reduction); any one set makes
   // the state a dead end of the model (Slots::past_bound).
   Variable<Bound> bound_met;
+  // Two zones: the lattice point PN_i stands at (RW's x_i, D27), and the quanta before it
+  // may step again.
+  std::optional<Variable<int>> point, move_wait;
   Block block;        // every variable above but the flight
   Block flight_block; // the flight
 };
@@ -186,6 +197,12 @@ struct RefinementSlots {
 // quanta since (⊥ once nothing is owed). Sorted by id, the empty places last.
 struct DeliverySlots {
   std::array<Variable<int>, EmuConfig::sent_capacity> age, from, owed, wait;
+  // Two zones: each message's VN, and the quanta it has been owed to the neighbouring VN
+  // (bit `pns` of owed; ⊥ when not owed). Empty with one zone.
+  std::vector<Variable<int>> zone, vn_wait;
+  // The resets delivered in this instant, by their TOBcast tag ⟨sender, sequence⟩ (+1; 0
+  // for an empty place): VN_0 restarts at a reset's first delivery to any PN.
+  std::vector<Variable<int>> reset_tag;
   Block block;
 };
 
@@ -193,10 +210,12 @@ struct Slots {
   EmuConfig config;
   std::vector<PnSlots> pns;
   Variable<int> messages_left, fails_left;
-  // Monitors: the VN's send task (quanta enabled without a send, and the send count it
-  // saw at the last tick); per client message, quanta since its send while VN_h owed it.
-  Variable<int> task_wait, task_sseq;
-  std::vector<Variable<int>> message_wait;
+  std::optional<Variable<int>> moves_left; // two zones
+  // Monitors: per zone, the VN's send task (quanta enabled without a send, and the send
+  // count it saw at the last tick); per client message, quanta since its send while the
+  // VN of its zone owed it (and, with two zones, that zone).
+  std::vector<Variable<int>> task_wait, task_sseq;
+  std::vector<Variable<int>> message_wait, message_zone;
   std::optional<RefinementSlots> refinement; // with EmuConfig::refinement_monitor
   std::optional<DeliverySlots> delivery;     // with EmuConfig::delivery_monitor
   // The first bit of the ghosts a check declares for itself (refinement, delivery): a

@@ -27,6 +27,10 @@ struct VnValue {
   int length = 0;
   std::array<int, EmuConfig::out_capacity> out_count{}, out_last{};
   int sseq = 0;
+  // Two zones: the count the neighbouring VN last reported (⊥ = -1), set by its messages
+  // (the specification's "nbr", §1.7: input receive(⟨report, v⟩ from VN_g): nbr := v; no
+  // reply, so there is no ping-pong).
+  int nbr = -1;
 
   bool operator==(const VnValue&) const = default;
 
@@ -63,10 +67,11 @@ struct VnValue {
     sseq = (sseq + 1) % EmuConfig::send_modulus;
   }
 
-  // A whole number for a join-ack's payload, and back; `clients` is the number of CNs.
-  int code(int clients) const;
-  static VnValue from_code(int code, int clients);
-  static int codes(int clients);
+  // A whole number for a join-ack's payload, and back; `clients` is the number of CNs,
+  // `zones` 1 or 2 (nbr is ⊥ with one zone).
+  int code(int clients, int zones) const;
+  static VnValue from_code(int code, int clients, int zones);
+  static int codes(int clients, int zones);
 };
 
 } // namespace vn_emulation

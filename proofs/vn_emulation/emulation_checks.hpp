@@ -19,9 +19,8 @@ checker::PropertyResult check_replica_consistency(const Emulation& emulation,
 // the stated ones: d_MMT = 2d_p + 2ε (the VN's send task), d_r = 4d_p + 5ε (start-up),
 // d_v = 2d_p + ε (a client message to the VN, a VN message to the clients). Violated
 // with a shortest trace to the first state past a stated figure; holds with a witness of
-// the figure nearest its bound. `emulation` must be built with EmuConfig::delivery_monitor
-// and refinement_monitor (VN_0's restarts as P7 maps them); its traces are cut to the
-// emulation without them.
+// the figure nearest its bound. `emulation` must be built with EmuConfig::delivery_monitor;
+// its traces are cut to the emulation without the monitor's ghosts.
 checker::PropertyResult check_theorem_2(const Emulation& emulation,
                                         const checker::ExploreOptions& options);
 // P7: the emulation implements the abstract VN_0 (models/vn_emulation/refinement.hpp):
