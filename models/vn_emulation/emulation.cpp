@@ -220,7 +220,10 @@ void tick(const Slots& slots, State& s) {
   std::vector<std::optional<VnValue>> abstract;
   for (int h = 0; h < c.zones; ++h)
     abstract.push_back(abstract_value(slots, s, h));
-  monitor_tick(slots, s, abstract[0].has_value());
+  std::vector<bool> alive;
+  for (const auto& vn : abstract)
+    alive.push_back(vn.has_value());
+  monitor_tick(slots, s, alive);
   for (int i = 0; i < c.pns; ++i) {
     const PnSlots& p = slots.pns[i];
     s[p.startup_wait] = s[p.up] && !abstract[point_zone(slots, s, i)]
@@ -343,8 +346,8 @@ void declare_footprints(tioa::Automaton& a, const std::shared_ptr<const Slots>& 
     };
     // P7's monitor, when there is one: TOBcast's deliveries and the transmissions.
     const auto monitor = [=](tioa::Footprint& f) {
-      if (slots->refinement)
-        block(f, slots->refinement->block);
+      for (const RefinementSlots& r : slots->refinement)
+        block(f, r.block);
     };
     // theorem-2's VN -> CN monitor, when there is one: VN messages sent and received, fails.
     const auto delivery = [=](tioa::Footprint& f) {

@@ -55,12 +55,18 @@ struct Reference {
   std::vector<Key> done, sent; // completed sends; the sends made in this instant
 };
 
-Reference replay(const Slots& slots, const State& s) {
-  const RefinementSlots& r = *slots.refinement;
+Reference replay(const Slots& slots, const State& s, int h) {
+  const RefinementSlots& r = slots.refinement[h];
   Reference ref{r.abstract.load(s), s[r.done_received], load_keys(s, r.done_age, r.done_from), {}};
   for (const Entry& e : load_taken(slots, r, s)) { // stored in delivery order
     const Packet& m = e.packet;
-    if (m.kind == Kind::simulate_receive) {
+    if (m.kind == Kind::simulate_receive && m.age >= 0) { // two zones: the neighbour's report
+      const Key id{m.age, m.from};
+      if (std::find(ref.done.begin(), ref.done.end(), id) == ref.done.end()) {
+        ref.val.nbr = m.count;
+        ref.done.push_back(id);
+      }
+    } else if (m.kind == Kind::simulate_receive) {
       if (((ref.done_received >> m.message) & 1) == 0 && ref.val.can_receive(slots.config.vn)) {
         ref.val.receive(m.from, slots.config.vn);
         ref.done_received |= 1 << m.message;
@@ -85,9 +91,10 @@ Reference replay(const Slots& slots, const State& s) {
 } // namespace
 
 void monitor_delivery(const Slots& slots, State& s, int pn, const Entry& entry) {
-  if (!slots.refinement)
+  if (slots.refinement.empty())
     return;
-  const RefinementSlots& r = *slots.refinement;
+  const int h = entry.packet.zone;
+  const RefinementSlots& r = slots.refinement[h];
   std::vector<Entry> taken = load_taken(slots, r, s);
   const Entry id = remembered(entry);
   if (std::any_of(taken.begin(), taken.end(), [&](const Entry& e) { return same(e, id); }))
@@ -99,27 +106,35 @@ void monitor_delivery(const Slots& slots, State& s, int pn, const Entry& entry) 
   taken.push_back(id);
   store_taken(r, s, std::move(taken));
   // P6: a reset delivered while VN_0 is alive, as it was at the last tick.
-  if (entry.packet.kind == Kind::reset && s[r.was_alive] && vn_alive(slots, s))
+  if (entry.packet.kind == Kind::reset && s[r.was_alive] && vn_alive(slots, s, h))
     s[r.live_restart] = true;
 }
 
 void monitor_transmit(const Slots& slots, State& s, int pn, const Packet& m) {
-  if (!slots.refinement)
+  if (slots.refinement.empty())
     return;
-  const RefinementSlots& r = *slots.refinement;
+  const RefinementSlots& r = slots.refinement[m.zone];
   const Key id{m.age, m.from};
   std::vector<Key> sent = load_keys(s, r.sent_age, r.sent_from);
-  const std::vector<Key> now = replay(slots, s).sent;
+  const std::vector<Key> now = replay(slots, s, m.zone).sent;
   sent.insert(sent.end(), now.begin(), now.end());
   if (std::find(sent.begin(), sent.end(), id) == sent.end() && s[r.refused_by] == 0)
     s[r.refused_by] = pn + 1;
 }
 
-void monitor_tick(const Slots& slots, State& s, bool alive) {
-  if (!slots.refinement)
-    return;
-  const RefinementSlots& r = *slots.refinement;
-  Reference ref = replay(slots, s);
+namespace {
+void monitor_tick_zone(const Slots& slots, State& s, int h, bool alive);
+} // namespace
+
+void monitor_tick(const Slots& slots, State& s, const std::vector<bool>& alive) {
+  for (std::size_t h = 0; h < slots.refinement.size(); ++h)
+    monitor_tick_zone(slots, s, static_cast<int>(h), alive[h]);
+}
+
+namespace {
+void monitor_tick_zone(const Slots& slots, State& s, int h, bool alive) {
+  const RefinementSlots& r = slots.refinement[h];
+  Reference ref = replay(slots, s, h);
   for (const Key& id : ref.sent)
     if (add_key(s, r.sent_age, r.sent_from, id) == KeyAdded::full)
       slots.exceed(s, 0, Bound::sent_ids);
@@ -137,42 +152,45 @@ void monitor_tick(const Slots& slots, State& s, bool alive) {
   // d_p, 002:37, and delivery is urgent): the instant's messages are done with.
   store_taken(r, s, {});
 }
+} // namespace
 
 void monitor_age(const Slots& slots, State& s) {
-  if (!slots.refinement)
-    return;
-  const RefinementSlots& r = *slots.refinement;
   const int horizon = slots.config.horizon();
-  for (const auto* ages : {&r.done_age, &r.sent_age})
-    for (const auto& age : *ages)
-      s.advance(age);
-  collect(s, r.done_age, r.done_from, horizon);
-  collect(s, r.sent_age, r.sent_from, horizon);
+  for (const RefinementSlots& r : slots.refinement) {
+    for (const auto* ages : {&r.done_age, &r.sent_age})
+      for (const auto& age : *ages)
+        s.advance(age);
+    collect(s, r.done_age, r.done_from, horizon);
+    collect(s, r.sent_age, r.sent_from, horizon);
+  }
 }
 
 bool restarted_live(const Slots& slots, const State& s) {
-  return slots.refinement && s[slots.refinement->live_restart];
+  return std::any_of(slots.refinement.begin(), slots.refinement.end(),
+                     [&](const RefinementSlots& r) { return s[r.live_restart]; });
 }
 
 std::optional<std::string> refinement_failure(const Slots& slots, const State& s) {
-  if (!slots.refinement)
-    return std::nullopt;
-  const RefinementSlots& r = *slots.refinement;
-  const VnValue abstract = replay(slots, s).val;
-  if (s[r.refused_by] != 0)
-    return "PN_" + std::to_string(s[r.refused_by] - 1) +
-           " transmitted a VN message the abstract VN did not send (its state: " +
-           describe(abstract) + ")";
-  if (urgent(slots, s))
-    return std::nullopt;
-  for (int i = 0; i < slots.config.pns; ++i) {
-    const PnSlots& p = slots.pns[i];
-    if (!in_zone(slots, s, i) || s[p.status] != Status::active)
+  const bool two = slots.refinement.size() == 2;
+  for (std::size_t z = 0; z < slots.refinement.size(); ++z) {
+    const int h = static_cast<int>(z);
+    const RefinementSlots& r = slots.refinement[z];
+    const std::string vn = two ? "VN_" + std::to_string(h) : "VN";
+    const VnValue abstract = replay(slots, s, h).val;
+    if (s[r.refused_by] != 0)
+      return "PN_" + std::to_string(s[r.refused_by] - 1) + " transmitted a message the abstract " +
+             vn + " did not send (its state: " + describe(abstract) + ")";
+    if (urgent(slots, s))
       continue;
-    const VnValue held = p.value.load(s);
-    if (held != abstract)
-      return "the active replica PN_" + std::to_string(i) + " holds (" + describe(held) +
-             ") where time passes, the abstract VN (" + describe(abstract) + ")";
+    for (int i = 0; i < slots.config.pns; ++i) {
+      const PnSlots& p = slots.pns[i];
+      if (vne_zone(slots, s, i) != h || s[p.status] != Status::active)
+        continue;
+      const VnValue held = p.value.load(s);
+      if (held != abstract)
+        return "the active replica PN_" + std::to_string(i) + " holds (" + describe(held) +
+               ") where time passes, the abstract " + vn + " (" + describe(abstract) + ")";
+    }
   }
   return std::nullopt;
 }

@@ -26,12 +26,18 @@
 // delivery to any VNE: both order events by the interleaving of replicas within an
 // instant, not by TOBcast's order.
 //
+// With two zones there is one such monitor a zone (RefinementSlots per zone): a TOBcast
+// message goes to the monitor of the zone it is tagged with, a VN message to its VN's, and
+// a neighbour's report received (simulate_receive with an id) sets the reference
+// replica's nbr as it sets a VNE's.
+//
 // The check: no refused transmission, and wherever time can pass every active replica
-// holds val_abs. With Theorem 2's timing monitors (theorem-2) this is the inclusion of
+// holds val_abs of its zone. With Theorem 2's timing monitors (theorem-2) this is the inclusion of
 // the emulation's traces, projected on VN_0's actions, in the abstract VN's.
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "models/vn_emulation/slots.hpp"
 
@@ -42,8 +48,8 @@ namespace vn_emulation {
 void monitor_delivery(const Slots& slots, State& s, int pn, const Entry& entry);
 // send_pn transmits VN message `m` (kind vn_message).
 void monitor_transmit(const Slots& slots, State& s, int pn, const Packet& m);
-// At a tick, before the ages grow: `alive` is VN_0's liveness where time passes.
-void monitor_tick(const Slots& slots, State& s, bool alive);
+// At a tick, before the ages grow: `alive[h]` is VN_h's liveness where time passes.
+void monitor_tick(const Slots& slots, State& s, const std::vector<bool>& alive);
 // Ages of the monitor's ids grow by one, and old ones go (D11).
 void monitor_age(const Slots& slots, State& s);
 

@@ -310,31 +310,33 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
     d.block.bits = a.layout().bits() - d.block.offset;
     slots->delivery = d;
   }
-  if (c.refinement_monitor) {
-    RefinementSlots r;
-    r.block.offset = a.layout().bits();
-    r.abstract = value_slots(a, "Monitor.val_abs", c);
-    r.done_received = a.integer("Monitor.done_received", 0, (1 << c.messages) - 1, 0);
-    for (int k = 0; k < EmuConfig::key_capacity; ++k) {
-      r.done_age[k] = age_variable(a, at("Monitor.done_age", k), c);
-      r.done_from[k] = a.integer(at("Monitor.done_from", k), 0, c.pns - 1, 0);
+  if (c.refinement_monitor)
+    for (int h = 0; h < c.zones; ++h) { // one reference replica a zone
+      const std::string m = h == 0 ? "Monitor." : "Monitor_1.";
+      RefinementSlots r;
+      r.block.offset = a.layout().bits();
+      r.abstract = value_slots(a, m + "val_abs", c);
+      r.done_received = a.integer(m + "done_received", 0, (1 << c.messages) - 1, 0);
+      for (int k = 0; k < EmuConfig::key_capacity; ++k) {
+        r.done_age[k] = age_variable(a, at(m + "done_age", k), c);
+        r.done_from[k] = a.integer(at(m + "done_from", k), 0, c.pns - 1, 0);
+      }
+      for (int k = 0; k < EmuConfig::buffer_capacity; ++k) {
+        const std::string name = at(m + "taken", k);
+        r.taken.push_back({packet_slots(a, name, c, false), age_variable(a, name + ".ts_age", c),
+                           a.integer(name + ".sender", 0, c.pns - 1, 0),
+                           a.integer(name + ".seq", 0, EmuConfig::sequence_capacity, 0)});
+      }
+      for (int k = 0; k < EmuConfig::sent_capacity; ++k) {
+        r.sent_age[k] = age_variable(a, at(m + "sent_age", k), c);
+        r.sent_from[k] = a.integer(at(m + "sent_from", k), 0, c.pns - 1, 0);
+      }
+      r.refused_by = a.integer(m + "refused_by", 0, c.pns, 0);
+      r.was_alive = a.boolean(m + "was_alive", warm);
+      r.live_restart = a.boolean(m + "live_restart", false);
+      r.block.bits = a.layout().bits() - r.block.offset;
+      slots->refinement.push_back(std::move(r));
     }
-    for (int k = 0; k < EmuConfig::buffer_capacity; ++k) {
-      const std::string name = at("Monitor.taken", k);
-      r.taken.push_back({packet_slots(a, name, c, false), age_variable(a, name + ".ts_age", c),
-                         a.integer(name + ".sender", 0, c.pns - 1, 0),
-                         a.integer(name + ".seq", 0, EmuConfig::sequence_capacity, 0)});
-    }
-    for (int k = 0; k < EmuConfig::sent_capacity; ++k) {
-      r.sent_age[k] = age_variable(a, at("Monitor.sent_age", k), c);
-      r.sent_from[k] = a.integer(at("Monitor.sent_from", k), 0, c.pns - 1, 0);
-    }
-    r.refused_by = a.integer("Monitor.refused_by", 0, c.pns, 0);
-    r.was_alive = a.boolean("Monitor.was_alive", warm);
-    r.live_restart = a.boolean("Monitor.live_restart", false);
-    r.block.bits = a.layout().bits() - r.block.offset;
-    slots->refinement = r;
-  }
   return slots;
 }
 

@@ -216,8 +216,8 @@ struct Slots {
   // VN of its zone owed it (and, with two zones, that zone).
   std::vector<Variable<int>> task_wait, task_sseq;
   std::vector<Variable<int>> message_wait, message_zone;
-  std::optional<RefinementSlots> refinement; // with EmuConfig::refinement_monitor
-  std::optional<DeliverySlots> delivery;     // with EmuConfig::delivery_monitor
+  std::vector<RefinementSlots> refinement; // with EmuConfig::refinement_monitor: a zone each
+  std::optional<DeliverySlots> delivery;   // with EmuConfig::delivery_monitor
   // The first bit of the ghosts a check declares for itself (refinement, delivery): a
   // trace cut there replays on the emulation without them.
   std::uint32_t check_ghosts = 0;

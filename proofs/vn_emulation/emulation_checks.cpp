@@ -109,7 +109,7 @@ std::pair<std::optional<StateId>, std::string> first_failure(const Run& run, Fai
 // ghosts a check declared for itself, after every other variable, are cut off; the
 // message says what they held.
 void strip_monitor(const Emulation& e, PropertyResult& r) {
-  if (!r.trace || (!e.slots->refinement && !e.slots->delivery))
+  if (!r.trace || (e.slots->refinement.empty() && !e.slots->delivery))
     return;
   const std::uint32_t first_ghost = e.slots->check_ghosts;
   const std::size_t words = (first_ghost + 63) / 64;
@@ -118,17 +118,6 @@ void strip_monitor(const Emulation& e, PropertyResult& r) {
     if (first_ghost % 64 != 0)
       step.state.back() &= (tioa::Word{1} << (first_ghost % 64)) - 1;
   }
-}
-
-// P6 and P7 have one reference replica, VN_0's: with two zones they are not checked.
-PropertyResult not_for_two_zones(const std::string& name) {
-  PropertyResult r;
-  r.name = name;
-  r.kind = "invariant";
-  r.verdict = Verdict::incomplete;
-  r.message = "not checked: its monitor follows one zone's VN (models/vn_emulation/"
-              "refinement.hpp); with zones=2 it is not built";
-  return r;
 }
 
 // One figure of Theorem 2: a monitor read on every reachable state.
@@ -178,7 +167,7 @@ PropertyResult check_replica_consistency(const Emulation& e,
 }
 
 PropertyResult check_refinement(const Emulation& e, const checker::ExploreOptions& options) {
-  if (!e.slots->refinement)
+  if (e.slots->refinement.empty())
     throw std::logic_error("check_refinement: the emulation has no refinement monitor");
   if (e.slots->config.eps == 0) {
     // The monitor takes each TOBcast message in the one instant every PN delivers it,
@@ -192,13 +181,12 @@ PropertyResult check_refinement(const Emulation& e, const checker::ExploreOption
                 "message after its turn; replica-consistency shows what breaks, E3)";
     return r;
   }
-  if (e.slots->config.zones == 2)
-    return not_for_two_zones("refines-vn");
   Run run = explore_emulation(e, options, "refines-vn");
   const auto [broken, why] =
       first_failure(run, [&](const tioa::State& s) { return refinement_failure(*e.slots, s); });
   run.result.notes.push_back(
-      "VN_0's events: each instant's TOBcast messages, executed in TOBcast's order by a "
+      "each VN's events (VN_0's; with two zones, VN_0's and VN_1's): each instant's TOBcast "
+      "messages, executed in TOBcast's order by a "
       "reference replica (models/vn_emulation/refinement.hpp; not the map of "
       "docs/design/vn-emulation.md §1.8, which orders events by the replicas' "
       "interleaving); the timing is theorem-2's");
@@ -211,10 +199,8 @@ PropertyResult check_refinement(const Emulation& e, const checker::ExploreOption
 }
 
 PropertyResult check_no_live_restart(const Emulation& e, const checker::ExploreOptions& options) {
-  if (!e.slots->refinement)
+  if (e.slots->refinement.empty())
     throw std::logic_error("check_no_live_restart: the emulation has no refinement monitor");
-  if (e.slots->config.zones == 2)
-    return not_for_two_zones("no-live-restart");
   Run run = explore_emulation(e, options, "no-live-restart");
   const std::optional<StateId> restart =
       first_failure(run, [&](const tioa::State& s) -> std::optional<std::string> {
@@ -223,9 +209,9 @@ PropertyResult check_no_live_restart(const Emulation& e, const checker::ExploreO
         return std::nullopt;
       }).first;
   decide(run, *e.slots, restart,
-         "a reset restarts VN_0 while it is alive (F4: its state is lost, which seed 002's "
+         "a reset restarts a VN while it is alive (F4: its state is lost, which seed 002's "
          "layer allows and seed 000's does not)",
-         "no reset restarts a live VN_0 in the " +
+         "no reset restarts a live VN in the " +
              checker::reachable_states(run.result.states, run.ex));
   strip_monitor(e, run.result);
   return run.result;
