@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <tuple>
-#include <vector>
 
 #include "models/vn_emulation/predicates.hpp"
 
@@ -18,8 +17,10 @@ struct Record {
   int vn_wait = -1; // quanta since the send while the neighbouring VN is owed it
 };
 
-std::vector<Record> load(const DeliverySlots& d, const State& s) {
-  std::vector<Record> out;
+using Records = tioa::FixedList<Record, EmuConfig::sent_capacity + 1>; // room for a new one
+
+Records load(const DeliverySlots& d, const State& s) {
+  Records out;
   for (std::size_t k = 0; k < d.age.size(); ++k)
     if (!s.is_bottom(d.age[k]))
       out.push_back({{s[d.age[k]], s[d.from[k]]},
@@ -30,7 +31,7 @@ std::vector<Record> load(const DeliverySlots& d, const State& s) {
   return out;
 }
 
-void store(const DeliverySlots& d, State& s, std::vector<Record> records) {
+void store(const DeliverySlots& d, State& s, Records records) {
   std::sort(records.begin(), records.end(), [](const Record& x, const Record& y) {
     return std::tie(x.id.age, x.id.from) < std::tie(y.id.age, y.id.from);
   });
@@ -50,7 +51,7 @@ void store(const DeliverySlots& d, State& s, std::vector<Record> records) {
 // Takes the owed bits `paid` off the records `which` selects, and ends the waits with
 // nothing left to wait for.
 template <class Which> void pay(const Slots& slots, State& s, int paid, Which which) {
-  std::vector<Record> records = load(*slots.delivery, s);
+  Records records = load(*slots.delivery, s);
   const int vn_bit = 1 << slots.config.pns;
   for (Record& r : records)
     if (which(r)) {
@@ -68,7 +69,7 @@ template <class Which> void pay(const Slots& slots, State& s, int paid, Which wh
 void delivery_transmit(const Slots& slots, State& s, const Packet& m) {
   if (!slots.delivery)
     return;
-  std::vector<Record> records = load(*slots.delivery, s);
+  Records records = load(*slots.delivery, s);
   const Key id{m.age, m.from};
   if (std::any_of(records.begin(), records.end(), [&](const Record& r) { return r.id == id; }))
     return; // sent before, by this replica or another
@@ -118,7 +119,7 @@ void delivery_tobcast(const Slots& slots, State& s, int pn, const Entry& entry) 
   // copy may come after its turn, D12d, and counts as delivered again), so the tags of
   // this instant's resets tell a first delivery from a later one.
   const int tag = 1 + entry.sender * (EmuConfig::sequence_capacity + 1) + entry.sequence;
-  std::vector<int> tags;
+  tioa::FixedList<int, 4> tags; // at most pns (3), one more to add
   for (const auto& v : slots.delivery->reset_tag)
     if (s[v] != 0)
       tags.push_back(s[v]);
@@ -145,7 +146,7 @@ void delivery_tick(const Slots& slots, State& s) {
     return;
   const EmuConfig& c = slots.config;
   const int vn_bit = 1 << c.pns;
-  std::vector<Record> kept;
+  Records kept;
   for (Record r : load(*slots.delivery, s)) {
     if ((r.owed & vn_bit) && !vn_alive(slots, s, 1 - r.zone)) { // not alive throughout
       r.owed &= ~vn_bit;

@@ -50,9 +50,10 @@ struct Flight {
   int age = 0, todo = 0, sequence = 0;
   int oblig = 0; // two zones (FlightSlots::oblig)
 };
+using Flights = tioa::FixedList<Flight, EmuConfig::flight_capacity>;
 
-std::vector<Flight> load_flight(const State& s, const PnSlots& p) {
-  std::vector<Flight> out;
+Flights load_flight(const State& s, const PnSlots& p) {
+  Flights out;
   for (const FlightSlots& f : p.flight)
     if (!is_empty(s, f.packet))
       out.push_back({f.packet.load(s), s[f.age], s[f.todo], s[f.sequence],
@@ -60,7 +61,7 @@ std::vector<Flight> load_flight(const State& s, const PnSlots& p) {
   return out;
 }
 
-void store_flight(State& s, const PnSlots& p, const std::vector<Flight>& records) {
+void store_flight(State& s, const PnSlots& p, const Flights& records) {
   for (std::size_t k = 0; k < p.flight.size(); ++k) {
     const Flight f = k < records.size() ? records[k] : Flight{};
     p.flight[k].packet.store(s, f.packet);
@@ -74,15 +75,15 @@ void store_flight(State& s, const PnSlots& p, const std::vector<Flight>& records
 
 // ---- TOBcast's hold buffer, in delivery order: timestamp, join-reqs last, sender, sequence
 
-std::vector<Entry> load_buffer(const Slots& slots, const State& s, const PnSlots& p) {
-  std::vector<Entry> out;
+Entries load_buffer(const Slots& slots, const State& s, const PnSlots& p) {
+  Entries out;
   for (const BufferSlots& b : p.buffer)
     if (!is_empty(s, b.packet))
       out.push_back(slots.entry(s, b));
   return out;
 }
 
-void store_buffer(State& s, const PnSlots& p, std::vector<Entry> entries) {
+void store_buffer(State& s, const PnSlots& p, Entries entries) {
   // 002:348: "It then delivers the messages for the timestamp in order of sender id and
   // sequence number. (... we actually order all join-req messages ... after any other
   // messages for a particular time.)" An older timestamp is a larger age.
@@ -117,7 +118,7 @@ int in_range_mask(const Slots& slots, const State& s, int i) {
 // the sender must, within d_p (D26: the sender too; in one zone, everybody).
 void lb_send(const Slots& slots, State& s, int i, const Packet& packet, int sequence) {
   const PnSlots& p = slots.pns[i];
-  std::vector<Flight> records = load_flight(s, p);
+  Flights records = load_flight(s, p);
   if (records.size() == p.flight.size()) {
     slots.exceed(s, i, Bound::flight);
     return;
@@ -186,7 +187,7 @@ void move(const Slots& slots, State& s, int i, int dir) {
   }
   const int n = slots.config.pns;
   for (int j = 0; j < n; ++j) {
-    std::vector<Flight> records = load_flight(s, slots.pns[j]);
+    Flights records = load_flight(s, slots.pns[j]);
     for (Flight& f : records)
       for (int k = 0; k < n; ++k)
         if (((f.oblig >> k) & 1) &&
@@ -217,12 +218,12 @@ void advance_packet(State& s, const PacketSlots& p) {
 // grows, the instant's sequence numbers and client sends start again, and old keys go.
 void tick(const Slots& slots, State& s) {
   const EmuConfig& c = slots.config;
-  std::vector<std::optional<VnValue>> abstract;
-  for (int h = 0; h < c.zones; ++h)
-    abstract.push_back(abstract_value(slots, s, h));
-  std::vector<bool> alive;
-  for (const auto& vn : abstract)
-    alive.push_back(vn.has_value());
+  std::array<std::optional<VnValue>, 2> abstract;
+  std::array<bool, 2> alive{};
+  for (int h = 0; h < c.zones; ++h) {
+    abstract[h] = abstract_value(slots, s, h);
+    alive[h] = abstract[h].has_value();
+  }
   monitor_tick(slots, s, alive);
   for (int i = 0; i < c.pns; ++i) {
     const PnSlots& p = slots.pns[i];
@@ -268,7 +269,7 @@ void tick(const Slots& slots, State& s) {
       advance_packet(s, b.packet);
     }
     if (c.zones == 2) { // a packet d_p old owes nobody any more (LBcast's deadline)
-      std::vector<Flight> records = load_flight(s, p), kept;
+      Flights records = load_flight(s, p), kept;
       for (const Flight& f : records)
         if (f.age < c.d_p)
           kept.push_back(f);
@@ -635,7 +636,7 @@ Emulation emulation(const EmuConfig& c) {
         })
         .eff([slots, i](State& s, const Params&) {
           const PnSlots& q = slots->pns[i];
-          std::vector<Entry> entries = load_buffer(*slots, s, q);
+          Entries entries = load_buffer(*slots, s, q);
           const Entry head = entries.front();
           const Packet m = head.packet;
           entries.erase(entries.begin());
@@ -696,7 +697,7 @@ Emulation emulation(const EmuConfig& c) {
         .eff([slots, i](State& s, const Params& m) {
           const PnSlots& q = slots->pns[i];
           const PnSlots& sender = slots->pns[m[0]];
-          std::vector<Flight> records = load_flight(s, sender);
+          Flights records = load_flight(s, sender);
           Flight& record = records[m[1]];
           record.todo &= ~(1 << i);
           record.oblig &= ~(1 << i);
@@ -710,7 +711,7 @@ Emulation emulation(const EmuConfig& c) {
             // stands in (D13; with one zone every packet is).
             if (p.zone != point_zone(*slots, s, i))
               return;
-            std::vector<Entry> entries = load_buffer(*slots, s, q);
+            Entries entries = load_buffer(*slots, s, q);
             if (entries.size() == q.buffer.size()) {
               slots->exceed(s, i, Bound::buffer);
               return;
@@ -784,7 +785,7 @@ Emulation emulation(const EmuConfig& c) {
           delivery_fail(*slots, s, i);
           // LBcast owes nothing to a failed PN; its own packets stay in flight (D25).
           for (const PnSlots& sender : slots->pns) {
-            std::vector<Flight> records = load_flight(s, sender), kept;
+            Flights records = load_flight(s, sender), kept;
             for (Flight f : records) {
               f.todo &= ~(1 << i);
               f.oblig &= ~(1 << i);

@@ -6,27 +6,29 @@
 #include <algorithm>
 #include <array>
 #include <tuple>
-#include <vector>
 
 #include "models/vn_emulation/slots.hpp"
+#include "tioa/fixed_list.hpp"
 
 namespace vn_emulation {
 
 enum class KeyAdded { added, known, full };
 
-template <std::size_t N>
-std::vector<Key> load_keys(const State& s, const std::array<Variable<int>, N>& age,
-                           const std::array<Variable<int>, N>& from) {
-  std::vector<Key> keys;
+// The set, with room for `Extra` more ids.
+template <std::size_t Extra = 0, std::size_t N>
+tioa::FixedList<Key, N + Extra> load_keys(const State& s, const std::array<Variable<int>, N>& age,
+                                          const std::array<Variable<int>, N>& from) {
+  tioa::FixedList<Key, N + Extra> keys;
   for (std::size_t k = 0; k < N; ++k)
     if (!s.is_bottom(age[k]))
       keys.push_back({s[age[k]], s[from[k]]});
   return keys;
 }
 
-template <std::size_t N>
+// `keys` (at most N of them) as the set.
+template <std::size_t N, class Keys>
 void store_keys(State& s, const std::array<Variable<int>, N>& age,
-                const std::array<Variable<int>, N>& from, std::vector<Key> keys) {
+                const std::array<Variable<int>, N>& from, Keys keys) {
   std::sort(keys.begin(), keys.end(), [](const Key& x, const Key& y) {
     return std::tie(x.age, x.from) < std::tie(y.age, y.from);
   });
@@ -41,7 +43,7 @@ void store_keys(State& s, const std::array<Variable<int>, N>& age,
 template <std::size_t N>
 KeyAdded add_key(State& s, const std::array<Variable<int>, N>& age,
                  const std::array<Variable<int>, N>& from, const Key& id) {
-  std::vector<Key> keys = load_keys(s, age, from);
+  tioa::FixedList<Key, N + 1> keys = load_keys<1>(s, age, from);
   if (std::find(keys.begin(), keys.end(), id) != keys.end())
     return KeyAdded::known;
   if (keys.size() == N)
@@ -55,7 +57,7 @@ KeyAdded add_key(State& s, const std::array<Variable<int>, N>& age,
 template <std::size_t N>
 void collect(State& s, const std::array<Variable<int>, N>& age,
              const std::array<Variable<int>, N>& from, int horizon) {
-  std::vector<Key> kept;
+  tioa::FixedList<Key, N> kept;
   for (const Key& key : load_keys(s, age, from))
     if (key.age < horizon)
       kept.push_back(key);

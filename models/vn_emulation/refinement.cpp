@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <tuple>
-#include <vector>
 
 #include "models/vn_emulation/key_set.hpp"
 #include "models/vn_emulation/predicates.hpp"
@@ -32,15 +31,15 @@ auto delivery_order(const Entry& e) {
                          static_cast<int>(p.kind), p.message, p.from, p.count, p.last, p.age);
 }
 
-std::vector<Entry> load_taken(const Slots& slots, const RefinementSlots& r, const State& s) {
-  std::vector<Entry> out;
+Entries load_taken(const Slots& slots, const RefinementSlots& r, const State& s) {
+  Entries out;
   for (const BufferSlots& b : r.taken)
     if (s[b.packet.kind] != static_cast<int>(Kind::none))
       out.push_back(slots.entry(s, b));
   return out;
 }
 
-void store_taken(const RefinementSlots& r, State& s, std::vector<Entry> taken) {
+void store_taken(const RefinementSlots& r, State& s, Entries taken) {
   std::sort(taken.begin(), taken.end(),
             [](const Entry& x, const Entry& y) { return delivery_order(x) < delivery_order(y); });
   store_entries(s, r.taken, taken);
@@ -52,12 +51,18 @@ void store_taken(const RefinementSlots& r, State& s, std::vector<Entry> taken) {
 struct Reference {
   VnValue val;
   int done_received = 0;
-  std::vector<Key> done, sent; // completed sends; the sends made in this instant
+  // Completed sends (and, two zones, reports), with room for this instant's; the sends
+  // made in this instant.
+  tioa::FixedList<Key, EmuConfig::key_capacity + EmuConfig::buffer_capacity> done;
+  tioa::FixedList<Key, EmuConfig::buffer_capacity> sent;
 };
 
 Reference replay(const Slots& slots, const State& s, int h) {
   const RefinementSlots& r = slots.refinement[h];
-  Reference ref{r.abstract.load(s), s[r.done_received], load_keys(s, r.done_age, r.done_from), {}};
+  Reference ref{r.abstract.load(s),
+                s[r.done_received],
+                load_keys<EmuConfig::buffer_capacity>(s, r.done_age, r.done_from),
+                {}};
   for (const Entry& e : load_taken(slots, r, s)) { // stored in delivery order
     const Packet& m = e.packet;
     if (m.kind == Kind::simulate_receive && m.age >= 0) { // two zones: the neighbour's report
@@ -95,7 +100,7 @@ void monitor_delivery(const Slots& slots, State& s, int pn, const Entry& entry) 
     return;
   const int h = entry.packet.zone;
   const RefinementSlots& r = slots.refinement[h];
-  std::vector<Entry> taken = load_taken(slots, r, s);
+  Entries taken = load_taken(slots, r, s);
   const Entry id = remembered(entry);
   if (std::any_of(taken.begin(), taken.end(), [&](const Entry& e) { return same(e, id); }))
     return; // taken at another PN's delivery
@@ -115,9 +120,9 @@ void monitor_transmit(const Slots& slots, State& s, int pn, const Packet& m) {
     return;
   const RefinementSlots& r = slots.refinement[m.zone];
   const Key id{m.age, m.from};
-  std::vector<Key> sent = load_keys(s, r.sent_age, r.sent_from);
-  const std::vector<Key> now = replay(slots, s, m.zone).sent;
-  sent.insert(sent.end(), now.begin(), now.end());
+  auto sent = load_keys<EmuConfig::buffer_capacity>(s, r.sent_age, r.sent_from);
+  for (const Key& k : replay(slots, s, m.zone).sent)
+    sent.push_back(k);
   if (std::find(sent.begin(), sent.end(), id) == sent.end() && s[r.refused_by] == 0)
     s[r.refused_by] = pn + 1;
 }
@@ -126,7 +131,7 @@ namespace {
 void monitor_tick_zone(const Slots& slots, State& s, int h, bool alive);
 } // namespace
 
-void monitor_tick(const Slots& slots, State& s, const std::vector<bool>& alive) {
+void monitor_tick(const Slots& slots, State& s, const std::array<bool, 2>& alive) {
   for (std::size_t h = 0; h < slots.refinement.size(); ++h)
     monitor_tick_zone(slots, s, static_cast<int>(h), alive[h]);
 }
@@ -143,7 +148,7 @@ void monitor_tick_zone(const Slots& slots, State& s, int h, bool alive) {
     ref = Reference{};
   if (ref.done.size() > r.done_age.size()) {
     slots.exceed(s, 0, Bound::sent_ids);
-    ref.done.resize(r.done_age.size());
+    ref.done.truncate(r.done_age.size());
   }
   r.abstract.store(s, ref.val);
   s[r.done_received] = ref.done_received;

@@ -35,9 +35,9 @@
 // holds val_abs of its zone. With Theorem 2's timing monitors (theorem-2) this is the inclusion of
 // the emulation's traces, projected on VN_0's actions, in the abstract VN's.
 
+#include <array>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "models/vn_emulation/slots.hpp"
 
@@ -49,7 +49,7 @@ void monitor_delivery(const Slots& slots, State& s, int pn, const Entry& entry);
 // send_pn transmits VN message `m` (kind vn_message).
 void monitor_transmit(const Slots& slots, State& s, int pn, const Packet& m);
 // At a tick, before the ages grow: `alive[h]` is VN_h's liveness where time passes.
-void monitor_tick(const Slots& slots, State& s, const std::vector<bool>& alive);
+void monitor_tick(const Slots& slots, State& s, const std::array<bool, 2>& alive);
 // Ages of the monitor's ids grow by one, and old ones go (D11).
 void monitor_age(const Slots& slots, State& s);
 

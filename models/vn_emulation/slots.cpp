@@ -163,8 +163,7 @@ Entry Slots::entry(const State& s, const BufferSlots& b) const {
   return {b.packet.load(s), optional_value(s, b.age), s[b.sender], s[b.sequence]};
 }
 
-void store_entries(State& s, const std::vector<BufferSlots>& places,
-                   const std::vector<Entry>& entries) {
+void store_entries(State& s, const std::vector<BufferSlots>& places, const Entries& entries) {
   for (std::size_t k = 0; k < places.size(); ++k) {
     const Entry e = k < entries.size() ? entries[k] : Entry{Packet{}, -1, 0, 0};
     places[k].packet.store(s, e.packet);

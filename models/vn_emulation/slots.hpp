@@ -15,6 +15,7 @@
 #include "models/vn_emulation/config.hpp"
 #include "models/vn_emulation/vn_counter.hpp"
 #include "tioa/automaton.hpp"
+#include "tioa/fixed_list.hpp"
 
 namespace vn_emulation {
 
@@ -102,6 +103,8 @@ struct Entry {
   Packet packet;
   int age = 0, sender = 0, sequence = 0;
 };
+// A TOBcast buffer's entries (or P7's taken messages), loaded whole.
+using Entries = tioa::FixedList<Entry, EmuConfig::buffer_capacity>;
 
 // VN_h's state as a replica holds it.
 struct ValueSlots {
@@ -239,8 +242,7 @@ struct Slots {
 };
 
 // Stores `entries` in `places`, in that order; the places left over are emptied.
-void store_entries(State& s, const std::vector<BufferSlots>& places,
-                   const std::vector<Entry>& entries);
+void store_entries(State& s, const std::vector<BufferSlots>& places, const Entries& entries);
 
 // Declares every variable of the emulation in `a`.
 std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& config);
