@@ -53,6 +53,18 @@ public:
   }
   void clear() { truncate(0); }
 
+  // Sorts by `less`, stably (an insertion sort: the lists are short; std::sort over a few
+  // places makes GCC 12 warn of bounds it cannot see, -Warray-bounds).
+  template <class Less> void sort(Less less) {
+    for (std::size_t i = 1; i < size_; ++i) {
+      T moving = std::move(items_[i]);
+      std::size_t j = i;
+      for (; j > 0 && less(moving, items_[j - 1]); --j)
+        items_[j] = std::move(items_[j - 1]);
+      items_[j] = std::move(moving);
+    }
+  }
+
 private:
   std::array<T, N> items_{};
   std::size_t size_ = 0;

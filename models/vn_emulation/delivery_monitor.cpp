@@ -32,7 +32,7 @@ Records load(const DeliverySlots& d, const State& s) {
 }
 
 void store(const DeliverySlots& d, State& s, Records records) {
-  std::sort(records.begin(), records.end(), [](const Record& x, const Record& y) {
+  records.sort([](const Record& x, const Record& y) {
     return std::tie(x.id.age, x.id.from) < std::tie(y.id.age, y.id.from);
   });
   for (std::size_t k = 0; k < d.age.size(); ++k) {
@@ -130,7 +130,7 @@ void delivery_tobcast(const Slots& slots, State& s, int pn, const Entry& entry) 
     return;
   }
   tags.push_back(tag);
-  std::sort(tags.begin(), tags.end());
+  tags.sort([](int x, int y) { return x < y; });
   for (std::size_t k = 0; k < slots.delivery->reset_tag.size(); ++k)
     s[slots.delivery->reset_tag[k]] = k < tags.size() ? tags[k] : 0;
   // VN_h restarts (h the reset's zone): what it owed and what was owed to it ends.

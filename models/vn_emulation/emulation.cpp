@@ -87,7 +87,7 @@ void store_buffer(State& s, const PnSlots& p, Entries entries) {
   // 002:348: "It then delivers the messages for the timestamp in order of sender id and
   // sequence number. (... we actually order all join-req messages ... after any other
   // messages for a particular time.)" An older timestamp is a larger age.
-  std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
+  entries.sort([](const Entry& x, const Entry& y) {
     const auto key = [](const Entry& e) {
       return std::make_tuple(-e.age, e.packet.kind == Kind::join_req, e.sender, e.sequence);
     };

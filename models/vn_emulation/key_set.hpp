@@ -29,9 +29,8 @@ tioa::FixedList<Key, N + Extra> load_keys(const State& s, const std::array<Varia
 template <std::size_t N, class Keys>
 void store_keys(State& s, const std::array<Variable<int>, N>& age,
                 const std::array<Variable<int>, N>& from, Keys keys) {
-  std::sort(keys.begin(), keys.end(), [](const Key& x, const Key& y) {
-    return std::tie(x.age, x.from) < std::tie(y.age, y.from);
-  });
+  keys.sort(
+      [](const Key& x, const Key& y) { return std::tie(x.age, x.from) < std::tie(y.age, y.from); });
   for (std::size_t k = 0; k < N; ++k) {
     const Key key = k < keys.size() ? keys[k] : Key{};
     set_optional(s, age[k], key.age);

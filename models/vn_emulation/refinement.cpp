@@ -40,8 +40,7 @@ Entries load_taken(const Slots& slots, const RefinementSlots& r, const State& s)
 }
 
 void store_taken(const RefinementSlots& r, State& s, Entries taken) {
-  std::sort(taken.begin(), taken.end(),
-            [](const Entry& x, const Entry& y) { return delivery_order(x) < delivery_order(y); });
+  taken.sort([](const Entry& x, const Entry& y) { return delivery_order(x) < delivery_order(y); });
   store_entries(s, r.taken, taken);
 }
 

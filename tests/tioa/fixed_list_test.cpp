@@ -2,6 +2,8 @@
 #include <catch2/catch.hpp>
 
 #include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "tioa/fixed_list.hpp"
@@ -24,5 +26,12 @@ TEST_CASE("FixedList: pushes, erases in order, truncates, refuses past its capac
   CHECK(list[1] == 7);
   list.clear();
   CHECK(list.empty());
+  // sort is stable: equal keys keep their order.
+  tioa::FixedList<std::pair<int, char>, 5> pairs{{2, 'a'}, {1, 'b'}, {2, 'c'}, {0, 'd'}, {1, 'e'}};
+  pairs.sort([](const auto& x, const auto& y) { return x.first < y.first; });
+  std::string order;
+  for (const auto& p : pairs)
+    order += p.second;
+  CHECK(order == "dbeac");
   CHECK(tioa::FixedList<int, 4>::capacity() == 4);
 }
