@@ -165,20 +165,25 @@ void delivery_tick(const Slots& slots, State& s) {
     s[v] = 0;
 }
 
-int vn_to_cn_wait(const Slots& slots, const State& s) {
+namespace {
+
+// The longest of the records' waits `field` (0 when none).
+int longest(const Slots& slots, const State& s, int Record::*field) {
   int worst = 0;
   if (slots.delivery)
     for (const Record& r : load(*slots.delivery, s))
-      worst = std::max(worst, r.wait);
+      worst = std::max(worst, r.*field);
   return worst;
 }
 
+} // namespace
+
+int vn_to_cn_wait(const Slots& slots, const State& s) {
+  return longest(slots, s, &Record::wait);
+}
+
 int vn_to_vn_wait(const Slots& slots, const State& s) {
-  int worst = 0;
-  if (slots.delivery)
-    for (const Record& r : load(*slots.delivery, s))
-      worst = std::max(worst, r.vn_wait);
-  return worst;
+  return longest(slots, s, &Record::vn_wait);
 }
 
 } // namespace vn_emulation
