@@ -92,7 +92,7 @@ std::optional<VnValue> adoptable_payload(const Slots& slots, const State& s, int
         if (!((s[f.todo] >> j) & 1))
           continue;
         const Packet packet = f.packet.load(s);
-        if (adoptable(packet, join_age))
+        if (packet.zone == h && adoptable(packet, join_age)) // (TOBcast_j keeps only zone h's)
           return VnValue::from_code(packet.value, n, slots.config.zones);
       }
   }
