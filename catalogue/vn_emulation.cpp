@@ -30,7 +30,7 @@ ModelDefinition vn_emulation_definition() {
   ModelDefinition d;
   d.name = "vn-emulation";
   d.description = "the VN emulation of seed 002 §VIII: physical nodes running TOBcast and VNE "
-                  "(join, reset) over LBcast(d_p) in one zone, emulating a FIFO-counter VN; "
+                  "(join, reset) over LBcast(d_p) in one zone or two, emulating a FIFO-counter VN; "
                   "Theorem 2's figures (time: quanta; models/vn_emulation/README.md)";
   d.params = {
       {"zones", 1, 1, 2,
