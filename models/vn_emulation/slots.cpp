@@ -39,6 +39,15 @@ PacketSlots packet_slots(tioa::Automaton& a, const std::string& name, const EmuC
   return p;
 }
 
+// A TOBcast entry ⟨ts, sender, seq, m⟩ (a hold buffer's place, or one P7's monitor took).
+BufferSlots buffer_slots(tioa::Automaton& a, const std::string& name, const EmuConfig& c,
+                         bool payload) {
+  PacketSlots packet = packet_slots(a, name, c, payload);
+  Variable<int> age = age_variable(a, name + ".ts_age", c);
+  Variable<int> sender = a.integer(name + ".sender", 0, c.pns - 1, 0);
+  return {packet, age, sender, a.integer(name + ".seq", 0, EmuConfig::sequence_capacity, 0)};
+}
+
 ValueSlots value_slots(tioa::Automaton& a, const std::string& name, const EmuConfig& c) {
   const int clients = c.pns;
   ValueSlots v;
@@ -233,10 +242,7 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
       p.local_out.push_back(packet_slots(a, at(pn + ".local_out", k), c, false));
     p.sequence = a.integer(pn + ".seq", 0, EmuConfig::sequence_capacity, 0);
     for (int k = 0; k < EmuConfig::buffer_capacity; ++k) {
-      const std::string name = at(pn + ".buffer", k);
-      p.buffer.push_back({packet_slots(a, name, c, true), age_variable(a, name + ".ts_age", c),
-                          a.integer(name + ".sender", 0, c.pns - 1, 0),
-                          a.integer(name + ".seq", 0, EmuConfig::sequence_capacity, 0)});
+      p.buffer.push_back(buffer_slots(a, at(pn + ".buffer", k), c, true));
     }
     for (int k = 0; k < EmuConfig::seen_capacity; ++k) {
       p.seen_age[k] = age_variable(a, at(pn + ".seen_age", k), c);
@@ -321,10 +327,7 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
         r.done_from[k] = a.integer(at(m + "done_from", k), 0, c.pns - 1, 0);
       }
       for (int k = 0; k < EmuConfig::buffer_capacity; ++k) {
-        const std::string name = at(m + "taken", k);
-        r.taken.push_back({packet_slots(a, name, c, false), age_variable(a, name + ".ts_age", c),
-                           a.integer(name + ".sender", 0, c.pns - 1, 0),
-                           a.integer(name + ".seq", 0, EmuConfig::sequence_capacity, 0)});
+        r.taken.push_back(buffer_slots(a, at(m + "taken", k), c, false));
       }
       for (int k = 0; k < EmuConfig::sent_capacity; ++k) {
         r.sent_age[k] = age_variable(a, at(m + "sent_age", k), c);
