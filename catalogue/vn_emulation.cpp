@@ -23,8 +23,23 @@ vn_emulation::EmuConfig vn_emulation_config(const ParamValues& p) {
   c.printed_init_action = p.at("init_action").text() == "printed";
   c.printed_restart = p.at("restart").text() == "printed";
   c.vn = p.at("vn").text() == "report" ? vn_emulation::Vn::report : vn_emulation::Vn::fifo;
+  c.ties =
+      p.at("ties").text() == "content" ? vn_emulation::Ties::content : vn_emulation::Ties::arrival;
   return c;
 }
+
+namespace {
+// E4's repair, a variant: the paper's TOBcast orders one timestamp's messages by sender and
+// sequence number only (002:348).
+ParamSpec ties_param() {
+  ParamSpec p = ParamSpec::choice(
+      "ties", "arrival", {"arrival", "content"},
+      "two TOBcast messages with one tag (a PN that failed and recovered in the instant) in "
+      "each PN's order of arrival, as the paper leaves them (E4), or a repair: by content");
+  p.variant = true;
+  return p;
+}
+} // namespace
 
 ModelDefinition vn_emulation_definition() {
   ModelDefinition d;
@@ -66,7 +81,8 @@ ModelDefinition vn_emulation_definition() {
                         "its precondition stays true, F1)"),
       ParamSpec::choice("vn", "fifo", {"fifo", "report"},
                         "the VN emulated: a FIFO counter that sends from a queue (as Fig. 6's "
-                        "VN) or one whose send reports the current count (F3)")};
+                        "VN) or one whose send reports the current count (F3)"),
+      ties_param()};
   d.properties = {
       {"no-timelock", "every reachable state has an action or a tick"},
       {"replica-consistency", "where time passes, the active replicas hold the same VN state "

@@ -32,6 +32,7 @@ std::string describe(const EmuConfig& c) {
          ", start=" + (c.start == Start::cold ? "cold" : "warm") +
          ", inputs=" + (c.inputs == Inputs::anywhere ? "anywhere" : "ticks") +
          (c.vn == Vn::report ? ", vn=report" : "") +
+         (c.ties == Ties::content ? ", ties=content (a repair of E4)" : "") +
          (c.printed_init_action ? ", init_action=printed" : "") +
          (c.printed_restart ? ", restart=printed" : "");
 }

@@ -18,6 +18,12 @@ enum class Inputs { anywhere, ticks };
 // sends so), or the "report" VN, whose one pending send carries the current count and
 // last sender, so that every receive changes what is to be sent (F3).
 enum class Vn { fifo, report };
+// How TOBcast orders two messages of one timestamp with the same sender and sequence
+// number (a PN that fails and recovers within an instant numbers from 0 again, 002:35):
+// the paper orders by sender and sequence alone (002:348), so each PN's buffer keeps them
+// as they arrived, which LBcast may make differ from PN to PN (E4); or, a repair, by
+// their content, the same order at every PN.
+enum class Ties { arrival, content };
 
 struct EmuConfig {
   // 1: instance I1, one zone B_0 and no geometry; 2: instances I2/I3 of the
@@ -41,6 +47,7 @@ struct EmuConfig {
   bool printed_init_action = false;
   bool printed_restart = false;
   Vn vn = Vn::fifo;
+  Ties ties = Ties::arrival;
   // The ghosts of P7's monitor (refinement.hpp), declared only for the check that reads
   // them, so that the other checks keep their state counts.
   bool refinement_monitor = false;

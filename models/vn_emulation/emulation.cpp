@@ -1,6 +1,7 @@
 #include "models/vn_emulation/emulation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <string>
 #include <tuple>
 
@@ -75,6 +76,18 @@ void store_flight(State& s, const PnSlots& p, const Flights& records) {
 
 // ---- TOBcast's hold buffer, in delivery order: timestamp, join-reqs last, sender, sequence
 
+// A packet's content as one sortable value (ties=content).
+auto content_order(const Packet& p) {
+  std::array<int, 9 + 2 * EmuConfig::key_capacity> fields{
+      static_cast<int>(p.kind), p.message, p.from, p.count, p.last, p.zone, p.age, p.value,
+      p.done.received};
+  for (int k = 0; k < EmuConfig::key_capacity; ++k) {
+    fields[9 + 2 * k] = p.done.sends[k].age;
+    fields[10 + 2 * k] = p.done.sends[k].from;
+  }
+  return fields;
+}
+
 Entries load_buffer(const Slots& slots, const State& s, const PnSlots& p) {
   Entries out;
   for (const BufferSlots& b : p.buffer)
@@ -83,15 +96,20 @@ Entries load_buffer(const Slots& slots, const State& s, const PnSlots& p) {
   return out;
 }
 
-void store_buffer(State& s, const PnSlots& p, Entries entries) {
+void store_buffer(const Slots& slots, State& s, const PnSlots& p, Entries entries) {
   // 002:348: "It then delivers the messages for the timestamp in order of sender id and
   // sequence number. (... we actually order all join-req messages ... after any other
-  // messages for a particular time.)" An older timestamp is a larger age.
-  entries.sort([](const Entry& x, const Entry& y) {
+  // messages for a particular time.)" An older timestamp is a larger age. Two messages
+  // with one tag keep their order of arrival (the sort is stable), or with ties=content
+  // (E4's repair) are ordered by their content.
+  const bool by_content = slots.config.ties == Ties::content;
+  entries.sort([by_content](const Entry& x, const Entry& y) {
     const auto key = [](const Entry& e) {
       return std::make_tuple(-e.age, e.packet.kind == Kind::join_req, e.sender, e.sequence);
     };
-    return key(x) < key(y);
+    if (key(x) != key(y) || !by_content)
+      return key(x) < key(y);
+    return content_order(x.packet) < content_order(y.packet);
   });
   store_entries(s, p.buffer, entries);
 }
@@ -154,7 +172,7 @@ void reset_pn(const Slots& slots, State& s, int i) {
   clear(s, p.tob_out);
   clear(s, p.local_out);
   s[p.sequence] = 0;
-  store_buffer(s, p, {});
+  store_buffer(slots, s, p, {});
   for (int k = 0; k < EmuConfig::seen_capacity; ++k) {
     s.set_bottom(p.seen_age[k]);
     s[p.seen_from[k]] = 0;
@@ -182,7 +200,7 @@ void move(const Slots& slots, State& s, int i, int dir) {
   s[*slots.moves_left] = s[*slots.moves_left] - 1;
   s[*q.move_wait] = EmuConfig::move_period;
   if (EmuConfig::zone_of(from) != EmuConfig::zone_of(to)) {
-    store_buffer(s, q, {});
+    store_buffer(slots, s, q, {});
     s[q.startup_wait] = 0; // d_r counts the time it remains in one zone (002:83)
   }
   const int n = slots.config.pns;
@@ -640,7 +658,7 @@ Emulation emulation(const EmuConfig& c) {
           const Entry head = entries.front();
           const Packet m = head.packet;
           entries.erase(entries.begin());
-          store_buffer(s, q, entries);
+          store_buffer(*slots, s, q, entries);
           monitor_delivery(*slots, s, i, head); // before the delivery changes the status
           delivery_tobcast(*slots, s, i, head);
           const Status status = s[q.status];
@@ -717,7 +735,7 @@ Emulation emulation(const EmuConfig& c) {
               return;
             }
             entries.push_back({p, got.age, m[0], got.sequence});
-            store_buffer(s, q, entries);
+            store_buffer(*slots, s, q, entries);
           } else if (p.kind == Kind::client_message) {
             // Input receive(m)_{i,h} (002:414): TOBcast-out ∪ {⟨simulate, ⟨receive, m⟩, ⊥⟩},
             // no status guard; nothing while h = ⊥ (D14), and only a message its CN sent
