@@ -10,16 +10,15 @@
 // before that depth, so the schedule is written out here.
 #include <catch2/catch.hpp>
 
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "checker/trace.hpp"
-#include "models/vn_emulation/emulation.hpp"
-#include "models/vn_emulation/predicates.hpp"
-#include "tioa/successors.hpp"
+#include "tests/models/vn_emulation/schedule.hpp"
 
 namespace {
+
+using vn_emulation_schedule::Walk;
+using vn_emulation_schedule::walk;
 
 // The schedule: CN_1's message m0 and CN_2's m1 both reach the VN through PN_0, once
 // before its fail and once after, with the same tag ⟨0, 0, 0⟩; PN_1 receives the two
@@ -66,56 +65,6 @@ const std::vector<std::string> schedule = {
     "simulate-action_2", //
 };
 
-struct Walk {
-  checker::Trace trace;
-  std::optional<std::string> failure; // replica_failure's, where it first holds
-  // Where time may pass after PN_1 and PN_2 have both executed m0 and m1 (and no model
-  // bound is met): the states the replicas are compared in.
-  int compared = 0;
-};
-
-// The schedule from the start state (each step must be enabled), then the first step the
-// generator offers, until the replicas disagree, time reaches `until` or a model bound is
-// met (TOBcast's buffer, by the VN's sends after 2).
-Walk walk(const vn_emulation::Emulation& e, std::uint64_t until) {
-  const tioa::Automaton& a = e.automaton;
-  const tioa::SuccessorGenerator generator(a);
-  std::vector<tioa::Word> words(a.words() + 1, 0), start;
-  a.start().enumerate(words.data(), 0, [&] {
-    if (start.empty())
-      start.assign(words.begin(), words.end() - 1);
-  });
-  Walk w;
-  w.trace.steps.push_back({"", 0, start, {}});
-  std::vector<tioa::Word> scratch(a.words() + 1, 0);
-  const vn_emulation::Slots& slots = *e.slots;
-  for (std::size_t k = 0; !w.failure && w.trace.steps.back().time < until; ++k) {
-    const checker::TraceStep& last = w.trace.steps.back();
-    const bool scheduled = k < schedule.size();
-    std::vector<tioa::Word> next;
-    tioa::StepLabel taken;
-    generator.successors(
-        last.state.data(), scratch.data(), [&](const tioa::Word* s, const tioa::StepLabel& l) {
-          if (next.empty() && (!scheduled || generator.describe(l) == schedule[k])) {
-            next.assign(s, s + a.words());
-            taken = l;
-          }
-        });
-    INFO("step " << k + 1 << (scheduled ? ": " + schedule[k] : std::string()));
-    REQUIRE_FALSE(next.empty());
-    w.trace.steps.push_back({generator.describe(taken), last.time + generator.duration(taken), next,
-                             checker::trace_action(generator, taken)});
-    const tioa::State reached(w.trace.steps.back().state.data(), 0);
-    if (slots.past_bound(reached))
-      break;
-    w.failure = vn_emulation::replica_failure(slots, reached);
-    if (!vn_emulation::urgent(slots, reached) && slots.completed(reached, 1).received == 3 &&
-        slots.completed(reached, 2).received == 3)
-      ++w.compared;
-  }
-  return w;
-}
-
 vn_emulation::EmuConfig e4_instance(vn_emulation::Ties ties) {
   vn_emulation::EmuConfig c;
   c.pns = 3;
@@ -131,7 +80,7 @@ TEST_CASE("vn-emulation E4: two messages with one TOBcast tag reach two replicas
           "[vn-emulation]") {
   const vn_emulation::Emulation e =
       vn_emulation::emulation(e4_instance(vn_emulation::Ties::arrival));
-  const Walk w = walk(e, 4);
+  const Walk w = walk(e, schedule, 4);
   REQUIRE(w.failure);
   CHECK(*w.failure ==
         "the active replicas PN_1 and PN_2 hold different VN states where time passes: (count 0, "
@@ -148,7 +97,11 @@ TEST_CASE("vn-emulation E4 repaired: with ties by content the replicas agree on 
           "[vn-emulation]") {
   const vn_emulation::Emulation e =
       vn_emulation::emulation(e4_instance(vn_emulation::Ties::content));
-  const Walk w = walk(e, 4);
+  // Compared where time passes once PN_1 and PN_2 have both executed m0 and m1.
+  const auto both_executed = [&e](const tioa::State& s) {
+    return e.slots->completed(s, 1).received == 3 && e.slots->completed(s, 2).received == 3;
+  };
+  const Walk w = walk(e, schedule, 4, {}, both_executed);
   CHECK_FALSE(w.failure);
-  CHECK(w.compared > 0);
+  CHECK(w.watched > 0);
 }

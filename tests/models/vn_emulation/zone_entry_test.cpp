@@ -1,0 +1,81 @@
+// E5 (models/vn_emulation/README.md): two zones at the paper's radius (R_p² = 20), one fail,
+// one move. PN_1 enters B_0 in the instant of a reset: it has dropped a TOBcast message of
+// B_0 that reached it while it still stood in B_1 (D13: TOBcast_{i,h} only processes
+// messages tagged for zone B_h, 002:348), then receives the reset of the same instant and,
+// joining, takes it (a reset starts the VN whatever the status, 002:352, D5). At the
+// delivery instant PN_0 and PN_1 are both active replicas of VN_0, and only PN_0 executes
+// the message. `check vn-emulation -p zones=2,fails=1,moves=1 --prop replica-consistency`
+// finds this 43-step trace as its shortest counterexample (72 million states, 3 minutes,
+// 16 GB); the test follows it step by step.
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "tests/models/vn_emulation/schedule.hpp"
+
+TEST_CASE("vn-emulation E5: a PN that enters a zone in the instant of a reset becomes a replica "
+          "without a message of that instant",
+          "[vn-emulation]") {
+  vn_emulation::EmuConfig c;
+  c.zones = 2;
+  c.fails = 1;
+  c.moves = 1;
+  const vn_emulation::Emulation e = vn_emulation::emulation(c);
+  const std::vector<std::string> schedule = {
+      "fail_0",
+      "recover_0",
+      "zone-update_0",
+      "join_0", // VN_0's only replica rejoins at 0
+      "TOBcast_0",
+      "lb-rcv_0(0,0)",
+      "lb-rcv_1(0,0)",
+      "tick",
+      "tick",
+      "TOBcast-rcv_0", // PN_0 listens from 2; nobody acks its join
+      "tick",
+      "tick",
+      "tick",
+      "tick",
+      "cn-send_0",     // CN_0's message at 6
+      "lb-rcv_1(0,0)", // PN_1, in B_1, ignores it
+      "tick",
+      "restart_0",     // at 7 = 3d_p + 4eps after its join, PN_0 resets VN_0: ⟨7, 0, 0⟩
+      "TOBcast_0",     //
+      "lb-rcv_0(0,0)", // PN_0 receives CN_0's message and suggests receive(m0) ...
+      "TOBcast_0",     // ... ⟨7, 0, 1⟩
+      "lb-rcv_0(0,0)", // PN_0 holds the reset
+      "lb-rcv_0(0,1)", // and the suggestion
+      "lb-rcv_1(0,1)", // PN_1, still in B_1, drops the suggestion (tagged B_0)
+      "move_1(0)",     // PN_1 steps west into B_0
+      "zone-update_1",
+      "join_1",
+      "TOBcast_1",
+      "lb-rcv_0(1,0)",
+      "lb-rcv_1(0,0)", // PN_1 holds the reset (it stands in B_0 now)
+      "lb-rcv_1(1,0)", // and its own join-req, after the reset in TOBcast's order
+      "tick",
+      "tick",
+      "TOBcast-rcv_0",     // at 9: PN_0 takes the reset (VN_0 starts) ...
+      "TOBcast-rcv_0",     // ... and the suggestion
+      "simulate-action_0", // count 1
+      "init-action_0",
+      "TOBcast_0",
+      "TOBcast-rcv_0",
+      "TOBcast-rcv_1", // PN_1, joining, takes the reset: active with VN_0's start state
+      "TOBcast-rcv_1",
+      "ack-join_1",
+      "TOBcast_1"};
+  const auto placed = [&e](const tioa::State& s) {
+    return s[*e.slots->pns[0].point] == 0 && s[*e.slots->pns[1].point] == 4;
+  };
+  const vn_emulation_schedule::Walk w = vn_emulation_schedule::walk(e, schedule, 10, placed);
+  REQUIRE(w.failure);
+  CHECK(w.trace.length() == schedule.size());
+  CHECK(*w.failure == "the active replicas PN_0 and PN_1 hold different VN states where time "
+                      "passes: (count 1, last CN_0, out [<1, CN_0>], sseq 0) and (count 0, last "
+                      "⊥, out [], sseq 0)");
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(e.automaton), w.trace, &why));
+  INFO(why);
+}
