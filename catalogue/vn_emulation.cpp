@@ -25,6 +25,7 @@ vn_emulation::EmuConfig vn_emulation_config(const ParamValues& p) {
   c.vn = p.at("vn").text() == "report" ? vn_emulation::Vn::report : vn_emulation::Vn::fifo;
   c.ties =
       p.at("ties").text() == "content" ? vn_emulation::Ties::content : vn_emulation::Ties::arrival;
+  c.reset_joined = p.at("reset").text() == "joined";
   return c;
 }
 
@@ -36,6 +37,15 @@ ParamSpec ties_param() {
       "ties", "arrival", {"arrival", "content"},
       "two TOBcast messages with one tag (a PN that failed and recovered in the instant) in "
       "each PN's order of arrival, as the paper leaves them (E4), or a repair: by content");
+  p.variant = true;
+  return p;
+}
+// E5's repair, a variant: as printed (002:352) a VNE takes a reset whatever its status.
+ParamSpec reset_param() {
+  ParamSpec p = ParamSpec::choice(
+      "reset", "any", {"any", "joined"},
+      "a VNE takes a reset whatever its status, as printed (D5; E5), or a repair: only once "
+      "its own join-req is delivered (listening) or when active");
   p.variant = true;
   return p;
 }
@@ -82,7 +92,8 @@ ModelDefinition vn_emulation_definition() {
       ParamSpec::choice("vn", "fifo", {"fifo", "report"},
                         "the VN emulated: a FIFO counter that sends from a queue (as Fig. 6's "
                         "VN) or one whose send reports the current count (F3)"),
-      ties_param()};
+      ties_param(),
+      reset_param()};
   d.properties = {
       {"no-timelock", "every reachable state has an action or a tick"},
       {"replica-consistency", "where time passes, the active replicas hold the same VN state "

@@ -33,6 +33,7 @@ std::string describe(const EmuConfig& c) {
          ", inputs=" + (c.inputs == Inputs::anywhere ? "anywhere" : "ticks") +
          (c.vn == Vn::report ? ", vn=report" : "") +
          (c.ties == Ties::content ? ", ties=content (a repair of E4)" : "") +
+         (c.reset_joined ? ", reset=joined (a repair of E5)" : "") +
          (c.printed_init_action ? ", init_action=printed" : "") +
          (c.printed_restart ? ", restart=printed" : "");
 }

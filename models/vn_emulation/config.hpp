@@ -48,6 +48,9 @@ struct EmuConfig {
   bool printed_restart = false;
   Vn vn = Vn::fifo;
   Ties ties = Ties::arrival;
+  // E5's repair, a variant: a VNE takes a reset only once its own join-req has been
+  // delivered (listening) or when active; as printed (002:352, D5) whatever its status.
+  bool reset_joined = false;
   // The ghosts of P7's monitor (refinement.hpp), declared only for the check that reads
   // them, so that the other checks keep their state counts.
   bool refinement_monitor = false;

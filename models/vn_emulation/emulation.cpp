@@ -693,6 +693,11 @@ Emulation emulation(const EmuConfig& c) {
             break;
           }
           case Kind::reset: // D5: the VN's start state, whatever the status (as printed)
+            // reset=joined (E5's repair): not for a VNE whose own join-req has not been
+            // delivered yet (idle or joining); it waits for a join-ack or its own reset.
+            if (slots->config.reset_joined && status != Status::listening &&
+                status != Status::active)
+              break;
             s[q.status] = Status::active;
             clear(s, q.pending);
             q.value.store(s, VnValue{});

@@ -23,7 +23,7 @@ using vn_emulation_schedule::walk;
 // The schedule: CN_1's message m0 and CN_2's m1 both reach the VN through PN_0, once
 // before its fail and once after, with the same tag ⟨0, 0, 0⟩; PN_1 receives the two
 // copies in one order, PN_2 in the other.
-const std::vector<std::string> schedule = {
+const std::vector<std::string> e4_schedule = {
     "cn-send_1",         // CN_1's message m0 (LBcast from PN_1, slot 0)
     "lb-rcv_0(1,0)",     // PN_0 suggests receive(m0)
     "TOBcast_0",         // A = ⟨0, 0, 0⟩: PN_0's first message at time 0
@@ -80,7 +80,7 @@ TEST_CASE("vn-emulation E4: two messages with one TOBcast tag reach two replicas
           "[vn-emulation]") {
   const vn_emulation::Emulation e =
       vn_emulation::emulation(e4_instance(vn_emulation::Ties::arrival));
-  const Walk w = walk(e, schedule, 4);
+  const Walk w = walk(e, e4_schedule, 4);
   REQUIRE(w.failure);
   CHECK(*w.failure ==
         "the active replicas PN_1 and PN_2 hold different VN states where time passes: (count 0, "
@@ -101,7 +101,7 @@ TEST_CASE("vn-emulation E4 repaired: with ties by content the replicas agree on 
   const auto both_executed = [&e](const tioa::State& s) {
     return e.slots->completed(s, 1).received == 3 && e.slots->completed(s, 2).received == 3;
   };
-  const Walk w = walk(e, schedule, 4, {}, both_executed);
+  const Walk w = walk(e, e4_schedule, 4, {}, both_executed);
   CHECK_FALSE(w.failure);
   CHECK(w.watched > 0);
 }
