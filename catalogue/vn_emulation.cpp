@@ -30,22 +30,11 @@ vn_emulation::EmuConfig vn_emulation_config(const ParamValues& p) {
 }
 
 namespace {
-// E4's repair, a variant: the paper's TOBcast orders one timestamp's messages by sender and
-// sequence number only (002:348).
-ParamSpec ties_param() {
-  ParamSpec p = ParamSpec::choice(
-      "ties", "arrival", {"arrival", "content"},
-      "two TOBcast messages with one tag (a PN that failed and recovered in the instant) in "
-      "each PN's order of arrival, as the paper leaves them (E4), or a repair: by content");
-  p.variant = true;
-  return p;
-}
-// E5's repair, a variant: as printed (002:352) a VNE takes a reset whatever its status.
-ParamSpec reset_param() {
-  ParamSpec p = ParamSpec::choice(
-      "reset", "any", {"any", "joined"},
-      "a VNE takes a reset whatever its status, as printed (D5; E5), or a repair: only once "
-      "its own join-req is delivered (listening) or when active");
+// A choice whose default is the paper's reading and whose other value repairs a finding.
+ParamSpec repair_choice(std::string name, std::string paper, std::string repair,
+                        std::string description) {
+  ParamSpec p =
+      ParamSpec::choice(std::move(name), paper, {paper, std::move(repair)}, std::move(description));
   p.variant = true;
   return p;
 }
@@ -92,8 +81,17 @@ ModelDefinition vn_emulation_definition() {
       ParamSpec::choice("vn", "fifo", {"fifo", "report"},
                         "the VN emulated: a FIFO counter that sends from a queue (as Fig. 6's "
                         "VN) or one whose send reports the current count (F3)"),
-      ties_param(),
-      reset_param()};
+      // E4: the paper's TOBcast orders one timestamp's messages by sender and sequence
+      // number only (002:348).
+      repair_choice("ties", "arrival", "content",
+                    "two TOBcast messages with one tag (a PN that failed and recovered in the "
+                    "instant) in each PN's order of arrival, as the paper leaves them (E4), or "
+                    "a repair: by content"),
+      // E5: as printed (002:352) a VNE takes a reset whatever its status.
+      repair_choice("reset", "any", "joined",
+                    "a VNE takes a reset whatever its status, as printed (D5; E5), or a "
+                    "repair: only once its own join-req is delivered (listening) or when "
+                    "active")};
   d.properties = {
       {"no-timelock", "every reachable state has an action or a tick"},
       {"replica-consistency", "where time passes, the active replicas hold the same VN state "
