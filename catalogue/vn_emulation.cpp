@@ -26,6 +26,7 @@ vn_emulation::EmuConfig vn_emulation_config(const ParamValues& p) {
   c.ties =
       p.at("ties").text() == "content" ? vn_emulation::Ties::content : vn_emulation::Ties::arrival;
   c.reset_joined = p.at("reset").text() == "joined";
+  c.tobcast_zone_at_delivery = p.at("tobcast_zone").text() == "delivery";
   return c;
 }
 
@@ -78,6 +79,10 @@ ModelDefinition vn_emulation_definition() {
       ParamSpec::choice("restart", "once", {"once", "printed"},
                         "a joiner's restart sends one reset (D7) or as printed (lines 430-434: "
                         "its precondition stays true, F1)"),
+      ParamSpec::choice("tobcast_zone", "arrival", {"arrival", "delivery"},
+                        "two zones: TOBcast drops a packet of another zone than its PN's when "
+                        "it arrives and empties its buffer on a zone change (D13), or keeps "
+                        "every packet and drops one of another zone at its delivery"),
       ParamSpec::choice("vn", "fifo", {"fifo", "report"},
                         "the VN emulated: a FIFO counter that sends from a queue (as Fig. 6's "
                         "VN) or one whose send reports the current count (F3)"),

@@ -34,6 +34,7 @@ std::string describe(const EmuConfig& c) {
          (c.vn == Vn::report ? ", vn=report" : "") +
          (c.ties == Ties::content ? ", ties=content (a repair of E4)" : "") +
          (c.reset_joined ? ", reset=joined (a repair of E5)" : "") +
+         (c.tobcast_zone_at_delivery ? ", tobcast_zone=delivery" : "") +
          (c.printed_init_action ? ", init_action=printed" : "") +
          (c.printed_restart ? ", restart=printed" : "");
 }

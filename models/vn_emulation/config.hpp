@@ -48,6 +48,11 @@ struct EmuConfig {
   bool printed_restart = false;
   Vn vn = Vn::fifo;
   Ties ties = Ties::arrival;
+  // D13's reading of "TOBcast_{i,h} only processes messages tagged for zone B_h" (002:348):
+  // a packet of another zone than the one PN_i stands in is dropped when it arrives, and a
+  // zone change empties the buffer (false); or every packet is kept and one of another zone
+  // is dropped at its delivery (true, `tobcast_zone=delivery`).
+  bool tobcast_zone_at_delivery = false;
   // E5's repair, a variant: a VNE takes a reset only once its own join-req has been
   // delivered (listening) or when active; as printed (002:352, D5) whatever its status.
   bool reset_joined = false;

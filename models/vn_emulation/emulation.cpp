@@ -191,8 +191,9 @@ int step(int point, int dir) {
 }
 
 // PN_i steps towards `dir`. A zone change empties TOBcast_i's buffer (its entries are for
-// the old zone, D13; zone-update follows at once, being urgent). LBcast owes nothing more
-// to a pair no longer within R_p (D28: "remains within R_p for the entire interval").
+// the old zone, D13; kept with tobcast_zone=delivery; zone-update follows at once, being urgent).
+// LBcast owes nothing more to a pair no longer within R_p (D28: "remains within R_p for the entire
+// interval").
 void move(const Slots& slots, State& s, int i, int dir) {
   const PnSlots& q = slots.pns[i];
   const int from = s[*q.point], to = step(from, dir);
@@ -200,7 +201,8 @@ void move(const Slots& slots, State& s, int i, int dir) {
   s[*slots.moves_left] = s[*slots.moves_left] - 1;
   s[*q.move_wait] = EmuConfig::move_period;
   if (EmuConfig::zone_of(from) != EmuConfig::zone_of(to)) {
-    store_buffer(slots, s, q, {});
+    if (!slots.config.tobcast_zone_at_delivery)
+      store_buffer(slots, s, q, {});
     s[q.startup_wait] = 0; // d_r counts the time it remains in one zone (002:83)
   }
   const int n = slots.config.pns;
@@ -659,6 +661,8 @@ Emulation emulation(const EmuConfig& c) {
           const Packet m = head.packet;
           entries.erase(entries.begin());
           store_buffer(*slots, s, q, entries);
+          if (m.zone != point_zone(*slots, s, i)) // tobcast_zone=delivery: not for B_h
+            return;
           monitor_delivery(*slots, s, i, head); // before the delivery changes the status
           delivery_tobcast(*slots, s, i, head);
           const Status status = s[q.status];
@@ -731,8 +735,10 @@ Emulation emulation(const EmuConfig& c) {
           const Packet& p = got.packet;
           if (through_tobcast(p.kind)) {
             // TOBcast_i keeps it until ts + d_p + ε if it is tagged with the zone PN_i
-            // stands in (D13; with one zone every packet is).
-            if (p.zone != point_zone(*slots, s, i))
+            // stands in (D13; with one zone every packet is), or, with
+            // tobcast_zone=delivery, whatever its zone (it is dropped at its delivery if
+            // PN_i is not in that zone then).
+            if (!slots->config.tobcast_zone_at_delivery && p.zone != point_zone(*slots, s, i))
               return;
             Entries entries = load_buffer(*slots, s, q);
             if (entries.size() == q.buffer.size()) {

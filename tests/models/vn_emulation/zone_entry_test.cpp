@@ -9,6 +9,7 @@
 // 16 GB); the test follows it step by step.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -16,13 +17,23 @@
 
 namespace {
 
-vn_emulation::EmuConfig e5_instance(bool reset_joined) {
+vn_emulation::EmuConfig e5_instance(bool reset_joined, bool tobcast_zone_at_delivery = false) {
   vn_emulation::EmuConfig c;
   c.zones = 2;
   c.fails = 1;
   c.moves = 1;
   c.reset_joined = reset_joined;
+  c.tobcast_zone_at_delivery = tobcast_zone_at_delivery;
   return c;
+}
+
+// PN_0 and PN_1 both active replicas of VN_0.
+vn_emulation_schedule::Predicate both_active(const vn_emulation::Emulation& e) {
+  return [&e](const tioa::State& s) {
+    const auto& p = e.slots->pns;
+    return s[p[0].status] == vn_emulation::Status::active &&
+           s[p[1].status] == vn_emulation::Status::active && s[p[1].zone] == 0;
+  };
 }
 
 const std::vector<std::string> e5_schedule = {
@@ -102,13 +113,26 @@ TEST_CASE("vn-emulation E5 repaired: a joiner that takes no reset before its own
   // step offered: PN_0 acks PN_1's join-req, and the two replicas agree.
   const vn_emulation::Emulation e = vn_emulation::emulation(e5_instance(true));
   const std::vector<std::string> prefix(e5_schedule.begin(), e5_schedule.end() - 3);
-  const auto both_active = [&e](const tioa::State& s) {
-    const auto& p = e.slots->pns;
-    return s[p[0].status] == vn_emulation::Status::active &&
-           s[p[1].status] == vn_emulation::Status::active && s[p[1].zone] == 0;
-  };
   const vn_emulation_schedule::Walk w =
-      vn_emulation_schedule::walk(e, prefix, 20, e5_placement(e), both_active);
+      vn_emulation_schedule::walk(e, prefix, 20, e5_placement(e), both_active(e));
+  CHECK_FALSE(w.failure);
+  CHECK(w.watched > 0);
+}
+
+TEST_CASE("vn-emulation E5 rests on D13: a TOBcast that keeps other zones' packets until their "
+          "delivery gives the joiner the message",
+          "[vn-emulation]") {
+  // tobcast_zone=delivery: PN_1 keeps the suggestion it received in B_1; at 9 it delivers
+  // the reset and then the suggestion, as PN_0 does, and the replicas agree.
+  const vn_emulation::Emulation e = vn_emulation::emulation(e5_instance(false, true));
+  const auto entered = std::find(e5_schedule.begin(), e5_schedule.end(), "lb-rcv_1(1,0)");
+  REQUIRE(entered != e5_schedule.end());
+  std::vector<std::string> prefix(e5_schedule.begin(), entered + 1);
+  // PN_1, in B_1, now also holds PN_0's join-req, and drops it at its delivery at 2.
+  const auto delivered = std::find(prefix.begin(), prefix.end(), "TOBcast-rcv_0");
+  prefix.insert(delivered + 1, "TOBcast-rcv_1");
+  const vn_emulation_schedule::Walk w =
+      vn_emulation_schedule::walk(e, prefix, 20, e5_placement(e), both_active(e));
   CHECK_FALSE(w.failure);
   CHECK(w.watched > 0);
 }
