@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <string>
-#include <tuple>
 
 #include "models/vn_emulation/delivery_monitor.hpp"
 #include "models/vn_emulation/key_set.hpp"
@@ -76,18 +75,6 @@ void store_flight(State& s, const PnSlots& p, const Flights& records) {
 
 // ---- TOBcast's hold buffer, in delivery order: timestamp, join-reqs last, sender, sequence
 
-// A packet's content as one sortable value (ties=content).
-auto content_order(const Packet& p) {
-  std::array<int, 9 + 2 * EmuConfig::key_capacity> fields{
-      static_cast<int>(p.kind), p.message, p.from, p.count, p.last, p.zone, p.age, p.value,
-      p.done.received};
-  for (int k = 0; k < EmuConfig::key_capacity; ++k) {
-    fields[9 + 2 * k] = p.done.sends[k].age;
-    fields[10 + 2 * k] = p.done.sends[k].from;
-  }
-  return fields;
-}
-
 Entries load_buffer(const Slots& slots, const State& s, const PnSlots& p) {
   Entries out;
   for (const BufferSlots& b : p.buffer)
@@ -103,14 +90,8 @@ void store_buffer(const Slots& slots, State& s, const PnSlots& p, Entries entrie
   // with one tag keep their order of arrival (the sort is stable), or with ties=content
   // (E4's repair) are ordered by their content.
   const bool by_content = slots.config.ties == Ties::content;
-  entries.sort([by_content](const Entry& x, const Entry& y) {
-    const auto key = [](const Entry& e) {
-      return std::make_tuple(-e.age, e.packet.kind == Kind::join_req, e.sender, e.sequence);
-    };
-    if (key(x) != key(y) || !by_content)
-      return key(x) < key(y);
-    return content_order(x.packet) < content_order(y.packet);
-  });
+  entries.sort(
+      [by_content](const Entry& x, const Entry& y) { return delivered_before(x, y, by_content); });
   store_entries(s, p.buffer, entries);
 }
 

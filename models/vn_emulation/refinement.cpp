@@ -1,7 +1,6 @@
 #include "models/vn_emulation/refinement.hpp"
 
 #include <algorithm>
-#include <tuple>
 
 #include "models/vn_emulation/key_set.hpp"
 #include "models/vn_emulation/predicates.hpp"
@@ -23,14 +22,6 @@ bool same(const Entry& x, const Entry& y) {
   return x.packet == y.packet && x.age == y.age && x.sender == y.sender && x.sequence == y.sequence;
 }
 
-// TOBcast's delivery order (store_buffer's: timestamp, join-reqs last, sender, sequence),
-// then the content, for tags that repeat.
-auto delivery_order(const Entry& e) {
-  const Packet& p = e.packet;
-  return std::make_tuple(-e.age, p.kind == Kind::join_req, e.sender, e.sequence,
-                         static_cast<int>(p.kind), p.message, p.from, p.count, p.last, p.age);
-}
-
 Entries load_taken(const Slots& slots, const RefinementSlots& r, const State& s) {
   Entries out;
   for (const BufferSlots& b : r.taken)
@@ -40,7 +31,8 @@ Entries load_taken(const Slots& slots, const RefinementSlots& r, const State& s)
 }
 
 void store_taken(const RefinementSlots& r, State& s, Entries taken) {
-  taken.sort([](const Entry& x, const Entry& y) { return delivery_order(x) < delivery_order(y); });
+  // TOBcast's order, then the content, for tags that repeat (slots.hpp).
+  taken.sort([](const Entry& x, const Entry& y) { return delivered_before(x, y, true); });
   store_entries(s, r.taken, taken);
 }
 

@@ -199,6 +199,17 @@ const char* to_string(Bound bound) {
   return names[static_cast<int>(bound)];
 }
 
+std::array<int, 9 + 2 * EmuConfig::key_capacity> content_order(const Packet& p) {
+  std::array<int, 9 + 2 * EmuConfig::key_capacity> fields{
+      static_cast<int>(p.kind), p.message, p.from, p.count, p.last, p.zone, p.age, p.value,
+      p.done.received};
+  for (int k = 0; k < EmuConfig::key_capacity; ++k) {
+    fields[9 + 2 * k] = p.done.sends[k].age;
+    fields[10 + 2 * k] = p.done.sends[k].from;
+  }
+  return fields;
+}
+
 bool Slots::past_bound(const State& s) const {
   return bound_met(s) != Bound::none;
 }

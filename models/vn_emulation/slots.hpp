@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 #include "models/vn_emulation/config.hpp"
@@ -103,6 +104,20 @@ struct Entry {
   Packet packet;
   int age = 0, sender = 0, sequence = 0;
 };
+// TOBcast's order of delivery (002:348): an older timestamp (a larger age) first, join-reqs
+// after the other messages of their timestamp, then sender and sequence number.
+inline auto tag_order(const Entry& e) {
+  return std::make_tuple(-e.age, e.packet.kind == Kind::join_req, e.sender, e.sequence);
+}
+// A packet's content as one sortable value, to order two messages with one tag (E4).
+std::array<int, 9 + 2 * EmuConfig::key_capacity> content_order(const Packet& p);
+// x before y in TOBcast's order; two entries with one tag by their content when
+// `by_content`, else neither before the other.
+inline bool delivered_before(const Entry& x, const Entry& y, bool by_content) {
+  if (tag_order(x) != tag_order(y) || !by_content)
+    return tag_order(x) < tag_order(y);
+  return content_order(x.packet) < content_order(y.packet);
+}
 // A TOBcast buffer's entries (or P7's taken messages), loaded whole.
 using Entries = tioa::FixedList<Entry, EmuConfig::buffer_capacity>;
 
