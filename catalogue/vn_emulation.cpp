@@ -131,24 +131,29 @@ ModelDefinition vn_emulation_definition() {
     monitored.refinement_monitor = true;
     vn_emulation::EmuConfig delivered = c;
     delivered.delivery_monitor = true;
+    // Every check but theorem-2 (which reads its figures from every state after the
+    // search) also runs on the fingerprint store.
+    no_timelock.fingerprint_store = true;
+    replicas.fingerprint_store = true;
+    checker::Property refines = custom_property(
+        "refines-vn",
+        "the emulation's events are the abstract VN's, and the replicas hold its state",
+        [=](const checker::ExploreOptions& o) {
+          return vn_emulation::check_refinement(vn_emulation::emulation(monitored), o);
+        });
+    refines.fingerprint_store = true;
+    checker::Property no_live_restart = custom_property(
+        "no-live-restart", "no reset restarts a live VN", [=](const checker::ExploreOptions& o) {
+          return vn_emulation::check_no_live_restart(vn_emulation::emulation(monitored), o);
+        });
+    no_live_restart.fingerprint_store = true;
     m.properties = {std::move(no_timelock), std::move(replicas),
                     custom_property("theorem-2", "Theorem 2's figures against the stated ones",
                                     [=](const checker::ExploreOptions& o) {
                                       return vn_emulation::check_theorem_2(
                                           vn_emulation::emulation(delivered), o);
                                     }),
-                    custom_property("refines-vn",
-                                    "the emulation's events are the abstract VN's, and the "
-                                    "replicas hold its state",
-                                    [=](const checker::ExploreOptions& o) {
-                                      return vn_emulation::check_refinement(
-                                          vn_emulation::emulation(monitored), o);
-                                    }),
-                    custom_property("no-live-restart", "no reset restarts a live VN",
-                                    [=](const checker::ExploreOptions& o) {
-                                      return vn_emulation::check_no_live_restart(
-                                          vn_emulation::emulation(monitored), o);
-                                    })};
+                    std::move(refines), std::move(no_live_restart)};
     return m;
   };
   // Warm start with one message and one fail; a cold start, where the VN starts exactly

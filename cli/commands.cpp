@@ -115,8 +115,9 @@ int command_check(const catalogue::Catalogue& models, const ModelRequest& reques
         throw catalogue::UsageError(
             "--store fingerprint: property '" + property->name + "' of model '" + request.model +
             "' is a " + checker::to_string(property->kind) +
-            " property; only invariants and deadlock / time-lock checks run on the fingerprint "
-            "store (the others read states or edges after the search): use --store exact");
+            " property that reads states or edges after the search, which the fingerprint "
+            "store does not keep (invariants, deadlock / time-lock checks and some custom "
+            "checks run on it): use --store exact");
   ReportFiles files(settings);
   if (!settings.dot_path.empty())
     write_state_graph(system, settings.dot_path);

@@ -1,12 +1,16 @@
 #include "proofs/vn_emulation/emulation_checks.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <utility>
 
 #include "checker/explorer.hpp"
+#include "checker/fingerprint.hpp"
 #include "checker/trace.hpp"
 #include "models/vn_emulation/delivery_monitor.hpp"
 #include "models/vn_emulation/predicates.hpp"
@@ -20,25 +24,50 @@ using checker::PropertyResult;
 using checker::StateId;
 using checker::Verdict;
 
-// One exploration of every state the emulation reaches, for the three checks. A state
-// past one of the model's bounds is kept but not expanded (what follows it is not
-// modelled). With options.por, states where time cannot pass are expanded by the
-// zero-time reduction with no predicate of its own: it keeps every state where time can
-// pass and every state without a successor (checker/zero_time_reduction.hpp), which is
-// all these checks read (replica consistency is asked where time passes; the monitors
-// grow only at ticks, so their largest values are on the states a tick leads to). With
-// the footprints the model declares today it leaves out no state and costs three to four
-// times the time: `--por off` is faster here (README, "Not done").
+// A state's fault in words, or nullopt: what a check looks for.
+using Failure = std::function<std::optional<std::string>(const tioa::State&)>;
+
+// One exploration of every state the emulation reaches, for the checks. A state past one
+// of the model's bounds is kept but not expanded (what follows it is not modelled). With
+// options.por, states where time cannot pass are expanded by the zero-time reduction with
+// no predicate of its own: it keeps every state where time can pass and every state
+// without a successor (checker/zero_time_reduction.hpp), which is all these checks read
+// (replica consistency is asked where time passes; the monitors grow only at ticks, so
+// their largest values are on the states a tick leads to). With the footprints the model
+// declares today it leaves out no state and costs three to four times the time: `--por
+// off` is faster here (README, "Not done").
 struct Run {
   tioa::SuccessorGenerator generator;
   checker::Exploration ex;
   PropertyResult result;
-  std::optional<StateId> first_past_bound;
+  std::optional<StateId> first_past_bound; // the first in breadth-first order (exact store)
+  std::optional<StateId> failed;           // the first state where the failure was found
+  std::string why;                         // what it found there
 };
 
+// A state past a bound, met by the workers of a search on the fingerprint store: the one
+// with the least fingerprint, so that the witness is the same for every thread count.
+struct PastBound {
+  std::atomic<std::uint64_t> least{~std::uint64_t{0}};
+  std::atomic<bool> met{false};
+  void note(std::uint64_t fingerprint) {
+    met.store(true, std::memory_order_relaxed);
+    std::uint64_t seen = least.load(std::memory_order_relaxed);
+    while (fingerprint < seen &&
+           !least.compare_exchange_weak(seen, fingerprint, std::memory_order_relaxed)) {
+    }
+  }
+};
+
+// Explores the emulation and finds the first state where `failure` (when given) finds
+// something. On the exact store every reached state is read after the search, in
+// breadth-first order. The fingerprint store keeps no states after the search, so there
+// the failure is the search's target (it stops at the first one, the first in
+// breadth-first order as well), and the states past a bound are noted as the search
+// meets them: the trace to one is then to the one with the least fingerprint, not the
+// nearest.
 Run explore_emulation(const Emulation& e, const checker::ExploreOptions& options,
-                      const std::string& name) {
-  checker::require_exact_store(options, name);
+                      const std::string& name, const Failure& failure = {}) {
   tioa::SuccessorGenerator generator(e.automaton);
   std::optional<checker::ZeroTimeReduction> reduction;
   if (options.por)
@@ -46,18 +75,47 @@ Run explore_emulation(const Emulation& e, const checker::ExploreOptions& options
   checker::ExploreOptions named = options;
   named.task = name;
   const auto slots = e.slots;
+  const bool fingerprints = options.store == checker::StoreKind::fingerprint;
+  const std::uint32_t words = generator.words();
+  const auto past_bound = std::make_shared<PastBound>();
   checker::ExploreHooks hooks;
-  hooks.expand = [slots](const tioa::Word* w) { return !slots->past_bound(tioa::State(w, 0)); };
+  hooks.expand = [slots, past_bound, fingerprints, words](const tioa::Word* w) {
+    if (!slots->past_bound(tioa::State(w, 0)))
+      return true;
+    if (fingerprints)
+      past_bound->note(checker::fingerprint(w, words));
+    return false;
+  };
+  if (fingerprints && failure)
+    hooks.target = [&failure](const tioa::Word* w) {
+      return failure(tioa::State(w, 0)).has_value();
+    };
   checker::Exploration ex = checker::explore(generator, e.automaton.start(), named, hooks,
                                              reduction ? &*reduction : nullptr);
   PropertyResult r = checker::result_of("invariant", ex, generator);
   r.name = name;
-  std::optional<StateId> past;
-  for (StateId id = 0; id < ex.store.size() && !past; ++id)
-    if (slots->past_bound(tioa::State(ex.store.state(id), 0)))
-      past = id;
   r.notes.push_back("instance: " + describe(slots->config));
-  return {std::move(generator), std::move(ex), std::move(r), past};
+  Run run{std::move(generator), std::move(ex), std::move(r), std::nullopt, std::nullopt, ""};
+  if (fingerprints) {
+    if (past_bound->met) {
+      const std::uint64_t key = past_bound->least.load();
+      run.first_past_bound = run.ex.store.find(&key, checker::hash_state(&key, 1));
+    }
+    if (run.ex.found) {
+      run.failed = run.ex.found;
+      run.why = failure(tioa::State(run.ex.found_state.data(), 0)).value_or("");
+    }
+    return run;
+  }
+  for (StateId id = 0; id < run.ex.store.size() && !run.first_past_bound; ++id)
+    if (slots->past_bound(tioa::State(run.ex.store.state(id), 0)))
+      run.first_past_bound = id;
+  for (StateId id = 0; failure && id < run.ex.store.size() && !run.failed; ++id)
+    if (std::optional<std::string> why = failure(tioa::State(run.ex.store.state(id), 0))) {
+      run.failed = id;
+      run.why = std::move(*why);
+    }
+  return run;
 }
 
 std::string trace_words(const checker::Exploration& ex) {
@@ -82,27 +140,17 @@ void decide(Run& run, const Slots& slots, std::optional<StateId> violation, cons
     return;
   }
   if (run.first_past_bound) {
-    const tioa::State s(run.ex.store.state(*run.first_past_bound), 0);
+    r.trace = checker::trace_to(run.generator, run.ex, *run.first_past_bound);
+    const tioa::State s(r.trace->steps.back().state.data(), 0);
     r.verdict = Verdict::incomplete;
     r.message = "no violation in the states within the model's bounds, but the bound on " +
                 std::string(to_string(slots.bound_met(s))) +
                 " (models/vn_emulation/config.hpp) is met (the trace): raise it to check beyond";
-    r.trace = checker::trace_to(run.generator, run.ex, *run.first_past_bound);
     r.trace_role = "witness";
     r.trace_kind = "bound";
     return;
   }
   checker::mark_holds(r, run.ex, holds);
-}
-
-// The first state, in breadth-first order, where `failure` (a state's fault in words, or
-// nullopt) finds something, with what it found.
-template <class Failure>
-std::pair<std::optional<StateId>, std::string> first_failure(const Run& run, Failure failure) {
-  for (StateId id = 0; id < run.ex.store.size(); ++id)
-    if (const std::optional<std::string> why = failure(tioa::State(run.ex.store.state(id), 0)))
-      return {id, *why};
-  return {std::nullopt, ""};
 }
 
 // A trace shows the emulation as the model's other checks do (and replays on it): the
@@ -157,10 +205,10 @@ PropertyResult check_no_timelock(const Emulation& e, const checker::ExploreOptio
 
 PropertyResult check_replica_consistency(const Emulation& e,
                                          const checker::ExploreOptions& options) {
-  Run run = explore_emulation(e, options, "replica-consistency");
-  const auto [broken, why] =
-      first_failure(run, [&](const tioa::State& s) { return replica_failure(*e.slots, s); });
-  decide(run, *e.slots, broken, "replicas disagree where time passes: " + why,
+  const auto slots = e.slots;
+  Run run = explore_emulation(e, options, "replica-consistency",
+                              [slots](const tioa::State& s) { return replica_failure(*slots, s); });
+  decide(run, *e.slots, run.failed, "replicas disagree where time passes: " + run.why,
          "the active replicas agree on every one of the " +
              checker::reachable_states(run.result.states, run.ex) + " where time passes");
   return run.result;
@@ -181,16 +229,17 @@ PropertyResult check_refinement(const Emulation& e, const checker::ExploreOption
                 "message after its turn; replica-consistency shows what breaks, E3)";
     return r;
   }
-  Run run = explore_emulation(e, options, "refines-vn");
-  const auto [broken, why] =
-      first_failure(run, [&](const tioa::State& s) { return refinement_failure(*e.slots, s); });
+  const auto slots = e.slots;
+  Run run = explore_emulation(e, options, "refines-vn", [slots](const tioa::State& s) {
+    return refinement_failure(*slots, s);
+  });
   run.result.notes.push_back(
       "each VN's events (VN_0's; with two zones, VN_0's and VN_1's): each instant's TOBcast "
       "messages, executed in TOBcast's order by a "
       "reference replica (models/vn_emulation/refinement.hpp; not the map of "
       "docs/design/vn-emulation.md §1.8, which orders events by the replicas' "
       "interleaving); the timing is theorem-2's");
-  decide(run, *e.slots, broken, "the emulation leaves the abstract VN: " + why,
+  decide(run, *e.slots, run.failed, "the emulation leaves the abstract VN: " + run.why,
          "the abstract VN takes every event, and every active replica holds its state "
          "wherever time passes, on all " +
              checker::reachable_states(run.result.states, run.ex));
@@ -201,14 +250,14 @@ PropertyResult check_refinement(const Emulation& e, const checker::ExploreOption
 PropertyResult check_no_live_restart(const Emulation& e, const checker::ExploreOptions& options) {
   if (e.slots->refinement.empty())
     throw std::logic_error("check_no_live_restart: the emulation has no refinement monitor");
-  Run run = explore_emulation(e, options, "no-live-restart");
-  const std::optional<StateId> restart =
-      first_failure(run, [&](const tioa::State& s) -> std::optional<std::string> {
-        if (restarted_live(*e.slots, s))
-          return "";
-        return std::nullopt;
-      }).first;
-  decide(run, *e.slots, restart,
+  const auto slots = e.slots;
+  Run run = explore_emulation(e, options, "no-live-restart",
+                              [slots](const tioa::State& s) -> std::optional<std::string> {
+                                if (restarted_live(*slots, s))
+                                  return "";
+                                return std::nullopt;
+                              });
+  decide(run, *e.slots, run.failed,
          "a reset restarts a VN while it is alive (F4: its state is lost, which seed 002's "
          "layer allows and seed 000's does not)",
          "no reset restarts a live VN in the " +
@@ -218,6 +267,8 @@ PropertyResult check_no_live_restart(const Emulation& e, const checker::ExploreO
 }
 
 PropertyResult check_theorem_2(const Emulation& e, const checker::ExploreOptions& options) {
+  // The figures are read from every reached state after the search.
+  checker::require_exact_store(options, "theorem-2");
   Run run = explore_emulation(e, options, "theorem-2");
   const Slots& slots = *e.slots;
   const EmuConfig& c = slots.config;

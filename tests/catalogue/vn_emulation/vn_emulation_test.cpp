@@ -2,6 +2,8 @@
 // physical nodes: replica consistency and Theorem 2's figures, the start-up time tight at
 // 4d_p + 5ε for three (d_p, ε), and d_v = 2d_p + ε broken with a trace that replays
 // (finding E1). Counts pinned (no reduction).
+#include <stdexcept>
+
 #include <catch2/catch.hpp>
 
 #include "catalogue/registry.hpp"
@@ -244,4 +246,57 @@ TEST_CASE("vn-emulation, two zones: a PN that moves across starts again in its n
   CHECK(r.verdict == checker::Verdict::holds);
   CHECK(r.states == 864'072);
   CHECK(et::figure(r, "d_v measured") == "3");
+}
+
+TEST_CASE("vn-emulation on the fingerprint store: the same states, what holds is incomplete, "
+          "and a violation or a bound met comes with a trace that replays",
+          "[vn-emulation]") {
+  checker::ExploreOptions fingerprints;
+  fingerprints.store = checker::StoreKind::fingerprint;
+  const auto agree = et::run("replica-consistency", {}, fingerprints).result;
+  CHECK(agree.verdict == checker::Verdict::incomplete);
+  CHECK_THAT(agree.message, Catch::StartsWith("holds up to hash collisions"));
+  CHECK(agree.states == 120'790); // as on the exact store
+  CHECK(agree.omission_probability.value_or(0) > 0);
+  CHECK(et::run("refines-vn", {}, fingerprints).result.states == 132'452);
+
+  // R_p = 1 loses packets inside a zone (README, P1): the search stops at the first state
+  // where the replicas differ, with the exact store's shortest trace (26 steps), before the
+  // exact store's 2,723,388 states.
+  const et::Run lossy =
+      et::run("replica-consistency", {"zones=2", "fails=0", "moves=1", "rp2=1"}, fingerprints);
+  CHECK(lossy.result.verdict == checker::Verdict::violated);
+  CHECK_THAT(lossy.result.message,
+             Catch::StartsWith("replicas disagree where time passes: the active replicas PN_0 "
+                               "and PN_1 hold different VN states"));
+  CHECK(lossy.result.states < 2'723'388);
+  REQUIRE(lossy.result.trace);
+  CHECK(lossy.result.trace->length() == 26);
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(lossy.system), *lossy.result.trace, &why));
+  INFO(why);
+
+  // A time-lock (F1) is found as on the exact store.
+  const et::Run locked = et::run("no-timelock", {"init_action=printed", "fails=0"}, fingerprints);
+  CHECK(locked.result.verdict == checker::Verdict::violated);
+  REQUIRE(locked.result.trace);
+  CHECK(checker::replay(tioa::SuccessorGenerator(locked.system), *locked.result.trace, &why));
+
+  // theorem-2 reads its figures from every state after the search.
+  CHECK_THROWS_AS(et::run("theorem-2", {}, fingerprints), std::invalid_argument);
+}
+
+TEST_CASE("vn-emulation on the fingerprint store: a model bound met is found and traced",
+          "[vn-emulation][slow]") {
+  checker::ExploreOptions fingerprints;
+  fingerprints.store = checker::StoreKind::fingerprint;
+  const et::Run r =
+      et::run("replica-consistency", {"start=cold", "messages=1", "fails=0"}, fingerprints);
+  CHECK(r.result.verdict == checker::Verdict::incomplete);
+  CHECK_THAT(r.result.message, Catch::Contains("the bound on TOBcast's buffer"));
+  CHECK(r.result.trace_kind == "bound");
+  REQUIRE(r.result.trace);
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(r.system), *r.result.trace, &why));
+  INFO(why);
 }
