@@ -20,7 +20,10 @@ checker::PropertyResult check_replica_consistency(const Emulation& emulation,
 // d_v = 2d_p + ε (a client message to the VN, a VN message to the clients). Violated
 // with a shortest trace to the first state past a stated figure; holds with a witness of
 // the figure nearest its bound. `emulation` must be built with EmuConfig::delivery_monitor;
-// its traces are cut to the emulation without the monitor's ghosts.
+// its traces are cut to the emulation without the monitor's ghosts. On the fingerprint
+// store the search stops at the first state past a stated figure (the worst figures are
+// then those met before it), and the witness of a figure that holds reaches a state with
+// its worst value (the one with the least fingerprint), not the nearest one.
 checker::PropertyResult check_theorem_2(const Emulation& emulation,
                                         const checker::ExploreOptions& options);
 // P7: the emulation implements the abstract VN_0 (models/vn_emulation/refinement.hpp):

@@ -2,8 +2,6 @@
 // physical nodes: replica consistency and Theorem 2's figures, the start-up time tight at
 // 4d_p + 5ε for three (d_p, ε), and d_v = 2d_p + ε broken with a trace that replays
 // (finding E1). Counts pinned (no reduction).
-#include <stdexcept>
-
 #include <catch2/catch.hpp>
 
 #include "catalogue/registry.hpp"
@@ -282,8 +280,24 @@ TEST_CASE("vn-emulation on the fingerprint store: the same states, what holds is
   REQUIRE(locked.result.trace);
   CHECK(checker::replay(tioa::SuccessorGenerator(locked.system), *locked.result.trace, &why));
 
-  // theorem-2 reads its figures from every state after the search.
-  CHECK_THROWS_AS(et::run("theorem-2", {}, fingerprints), std::invalid_argument);
+  // theorem-2 measures the states as the search meets them: the same worst figures, with a
+  // witness of the one nearest its bound; and F3's d_MMT 6 > 4 is found (as a first state
+  // past 4: the search stops there).
+  const et::Run theorem = et::run("theorem-2", {}, fingerprints);
+  CHECK(theorem.result.verdict == checker::Verdict::incomplete);
+  CHECK_THAT(theorem.result.message, Catch::StartsWith("holds up to hash collisions"));
+  CHECK(et::figure(theorem.result, "d_MMT measured") == "2");
+  CHECK(et::figure(theorem.result, "d_v measured") == "3");
+  REQUIRE(theorem.result.trace);
+  CHECK(theorem.result.trace_kind == "worst-case");
+  CHECK(checker::replay(tioa::SuccessorGenerator(theorem.system), *theorem.result.trace, &why));
+  const et::Run late =
+      et::run("theorem-2", {"pns=1", "messages=3", "fails=0", "vn=report"}, fingerprints);
+  CHECK(late.result.verdict == checker::Verdict::violated);
+  CHECK_THAT(late.result.message, Catch::StartsWith("d_MMT exceeds Theorem 2's 2d_p + 2eps = 4"));
+  REQUIRE(late.result.trace);
+  CHECK(late.result.trace->length() == 37); // as on the exact store
+  CHECK(checker::replay(tioa::SuccessorGenerator(late.system), *late.result.trace, &why));
 }
 
 TEST_CASE("vn-emulation on the fingerprint store: a model bound met is found and traced",
