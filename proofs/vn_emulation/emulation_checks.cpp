@@ -152,8 +152,14 @@ void decide(Run& run, const Slots& slots, std::optional<StateId> violation, cons
     r.trace = checker::trace_to(run.generator, run.ex, *run.first_past_bound);
     const tioa::State s(r.trace->steps.back().state.data(), 0);
     r.verdict = Verdict::incomplete;
-    r.message = "no violation in the states within the model's bounds, but the bound on " +
-                std::string(to_string(slots.bound_met(s))) +
+    const std::string collisions =
+        run.ex.fingerprints()
+            ? " (up to hash collisions, omission probability ≤ " +
+                  checker::format_probability(checker::omission_probability(run.ex.store.size())) +
+                  ")"
+            : "";
+    r.message = "no violation in the states within the model's bounds" + collisions +
+                ", but the bound on " + std::string(to_string(slots.bound_met(s))) +
                 " (models/vn_emulation/config.hpp) is met (the trace): raise it to check beyond";
     r.trace_role = "witness";
     r.trace_kind = "bound";
