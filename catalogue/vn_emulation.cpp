@@ -15,6 +15,7 @@ vn_emulation::EmuConfig vn_emulation_config(const ParamValues& p) {
   c.eps = whole(p, "eps");
   c.messages = whole(p, "messages");
   c.fails = whole(p, "fails");
+  c.buffer = whole(p, "buffer");
   c.start = p.at("start").text() == "cold" ? vn_emulation::Start::cold : vn_emulation::Start::warm;
   c.inputs = p.at("inputs").text() == "ticks" ? vn_emulation::Inputs::ticks
                                               : vn_emulation::Inputs::anywhere;
@@ -60,6 +61,9 @@ ModelDefinition vn_emulation_definition() {
       {"eps", 1, 0, 3, "TOBcast's extra hold eps (seed 002 line 348)"},
       {"messages", 1, 0, 3, "client messages sent in all"},
       {"fails", 1, 0, 3, "fail inputs in all (a failed node may recover at any time)"},
+      {"buffer", 6, 2, vn_emulation::EmuConfig::max_buffer_capacity,
+       "the model's bound on TOBcast's hold buffer, entries per PN (a check that meets it is "
+       "incomplete: raise it to check beyond)"},
       ParamSpec::choice("start", "warm", {"warm", "cold"},
                         "warm: every VNE active in the zone at time 0; cold: as printed "
                         "(h = ⊥, every VN starts failed)"),

@@ -19,6 +19,9 @@ std::optional<std::string> invalid(const EmuConfig& c) {
     return "messages must be 0..3, not " + std::to_string(c.messages);
   if (c.fails < 0 || c.fails > 3)
     return "fails must be 0..3, not " + std::to_string(c.fails);
+  if (c.buffer < 2 || c.buffer > EmuConfig::max_buffer_capacity)
+    return "buffer must be 2.." + std::to_string(EmuConfig::max_buffer_capacity) + ", not " +
+           std::to_string(c.buffer);
   return std::nullopt;
 }
 
@@ -36,7 +39,8 @@ std::string describe(const EmuConfig& c) {
          (c.reset_joined ? ", reset=joined (a repair of E5)" : "") +
          (c.tobcast_zone_at_delivery ? ", tobcast_zone=delivery" : "") +
          (c.printed_init_action ? ", init_action=printed" : "") +
-         (c.printed_restart ? ", restart=printed" : "");
+         (c.printed_restart ? ", restart=printed" : "") +
+         (c.buffer != EmuConfig{}.buffer ? ", buffer=" + std::to_string(c.buffer) : "");
 }
 
 } // namespace vn_emulation

@@ -62,6 +62,9 @@ struct EmuConfig {
   // The ghosts of theorem-2's d_v for VN messages to the clients (delivery_monitor.hpp),
   // declared only for that check, for the same reason.
   bool delivery_monitor = false;
+  // The bound on TOBcast's hold buffer (entries per PN), 2..max_buffer_capacity: a
+  // packet that finds it full is a state past the bound (the check is incomplete there).
+  int buffer = 6;
 
   // The instance VN, a FIFO counter (D31): count mod counter_modulus, the last sender, a
   // send queue of at most out_capacity entries, and a send counter mod send_modulus.
@@ -70,16 +73,16 @@ struct EmuConfig {
   static constexpr int send_modulus = 4;
   // The model's bounds on its queues and sets (a state past one is flagged, and a check
   // that meets one is incomplete, never wrong).
-  static constexpr int pending_capacity = 4;   // pending-actions
-  static constexpr int tob_out_capacity = 3;   // TOBcast-out
-  static constexpr int local_out_capacity = 2; // local-out
-  static constexpr int flight_capacity = 4;    // LBcast packets in flight per sender
-  static constexpr int buffer_capacity = 6;    // TOBcast's hold buffer
-  static constexpr int key_capacity = 3;       // send keys in completed-actions
-  static constexpr int seen_capacity = 3;      // VN message ids a client remembers
-  static constexpr int sequence_capacity = 7;  // TOBcast sequence numbers in one instant
-  static constexpr int sent_capacity = 3;      // P7's monitor: VN message ids transmitted
-  static constexpr int reset_capacity = 2;     // P7's monitor: resets delivered
+  static constexpr int pending_capacity = 4;    // pending-actions
+  static constexpr int tob_out_capacity = 3;    // TOBcast-out
+  static constexpr int local_out_capacity = 2;  // local-out
+  static constexpr int flight_capacity = 4;     // LBcast packets in flight per sender
+  static constexpr int max_buffer_capacity = 8; // TOBcast's hold buffer: `buffer` at most
+  static constexpr int key_capacity = 3;        // send keys in completed-actions
+  static constexpr int seen_capacity = 3;       // VN message ids a client remembers
+  static constexpr int sequence_capacity = 7;   // TOBcast sequence numbers in one instant
+  static constexpr int sent_capacity = 3;       // P7's monitor: VN message ids transmitted
+  static constexpr int reset_capacity = 2;      // P7's monitor: resets delivered
 
   // Two zones (D27): a lattice of columns × rows points, b = 2 lattice units; point p is
   // at column p / rows, row p % rows; B_h holds the columns 2h, 2h + 1 (half-open

@@ -44,15 +44,15 @@ struct Reference {
   int done_received = 0;
   // Completed sends (and, two zones, reports), with room for this instant's; the sends
   // made in this instant.
-  tioa::FixedList<Key, EmuConfig::key_capacity + EmuConfig::buffer_capacity> done;
-  tioa::FixedList<Key, EmuConfig::buffer_capacity> sent;
+  tioa::FixedList<Key, EmuConfig::key_capacity + EmuConfig::max_buffer_capacity> done;
+  tioa::FixedList<Key, EmuConfig::max_buffer_capacity> sent;
 };
 
 Reference replay(const Slots& slots, const State& s, int h) {
   const RefinementSlots& r = slots.refinement[h];
   Reference ref{r.abstract.load(s),
                 s[r.done_received],
-                load_keys<EmuConfig::buffer_capacity>(s, r.done_age, r.done_from),
+                load_keys<EmuConfig::max_buffer_capacity>(s, r.done_age, r.done_from),
                 {}};
   for (const Entry& e : load_taken(slots, r, s)) { // stored in delivery order
     const Packet& m = e.packet;
@@ -111,7 +111,7 @@ void monitor_transmit(const Slots& slots, State& s, int pn, const Packet& m) {
     return;
   const RefinementSlots& r = slots.refinement[m.zone];
   const Key id{m.age, m.from};
-  auto sent = load_keys<EmuConfig::buffer_capacity>(s, r.sent_age, r.sent_from);
+  auto sent = load_keys<EmuConfig::max_buffer_capacity>(s, r.sent_age, r.sent_from);
   for (const Key& k : replay(slots, s, m.zone).sent)
     sent.push_back(k);
   if (std::find(sent.begin(), sent.end(), id) == sent.end() && s[r.refused_by] == 0)

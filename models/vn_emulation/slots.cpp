@@ -252,7 +252,7 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
     for (int k = 0; k < EmuConfig::local_out_capacity; ++k)
       p.local_out.push_back(packet_slots(a, at(pn + ".local_out", k), c, false));
     p.sequence = a.integer(pn + ".seq", 0, EmuConfig::sequence_capacity, 0);
-    for (int k = 0; k < EmuConfig::buffer_capacity; ++k) {
+    for (int k = 0; k < c.buffer; ++k) {
       p.buffer.push_back(buffer_slots(a, at(pn + ".buffer", k), c, true));
     }
     for (int k = 0; k < EmuConfig::seen_capacity; ++k) {
@@ -337,7 +337,7 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
         r.done_age[k] = age_variable(a, at(m + "done_age", k), c);
         r.done_from[k] = a.integer(at(m + "done_from", k), 0, c.pns - 1, 0);
       }
-      for (int k = 0; k < EmuConfig::buffer_capacity; ++k) {
+      for (int k = 0; k < c.buffer; ++k) {
         r.taken.push_back(buffer_slots(a, at(m + "taken", k), c, false));
       }
       for (int k = 0; k < EmuConfig::sent_capacity; ++k) {

@@ -119,7 +119,7 @@ inline bool delivered_before(const Entry& x, const Entry& y, bool by_content) {
   return content_order(x.packet) < content_order(y.packet);
 }
 // A TOBcast buffer's entries (or P7's taken messages), loaded whole.
-using Entries = tioa::FixedList<Entry, EmuConfig::buffer_capacity>;
+using Entries = tioa::FixedList<Entry, EmuConfig::max_buffer_capacity>;
 
 // VN_h's state as a replica holds it.
 struct ValueSlots {

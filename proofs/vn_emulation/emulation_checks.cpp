@@ -158,9 +158,15 @@ void decide(Run& run, const Slots& slots, std::optional<StateId> violation, cons
                   checker::format_probability(checker::omission_probability(run.ex.store.size())) +
                   ")"
             : "";
+    const Bound bound = slots.bound_met(s);
+    const std::string raise =
+        bound == Bound::buffer || bound == Bound::taken
+            ? "raise it (-p buffer=N, now " + std::to_string(slots.config.buffer) + ", at most " +
+                  std::to_string(EmuConfig::max_buffer_capacity) + ") to check beyond"
+            : "raise it (models/vn_emulation/config.hpp) to check beyond";
     r.message = "no violation in the states within the model's bounds" + collisions +
-                ", but the bound on " + std::string(to_string(slots.bound_met(s))) +
-                " (models/vn_emulation/config.hpp) is met (the trace): raise it to check beyond";
+                ", but the bound on " + std::string(to_string(bound)) +
+                " is met (the trace): " + raise;
     r.trace_role = "witness";
     r.trace_kind = "bound";
     return;

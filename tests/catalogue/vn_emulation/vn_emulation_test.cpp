@@ -97,6 +97,24 @@ TEST_CASE("vn-emulation: a model bound met makes a check incomplete, never holds
   CHECK(r.trace_kind == "bound");
 }
 
+TEST_CASE("vn-emulation buffer: TOBcast's buffer bound is a parameter; below what the instance "
+          "needs the check is incomplete and names it, from 4 on the defaults hold",
+          "[vn-emulation]") {
+  const auto small = et::run("replica-consistency", {"buffer=3"});
+  CHECK(small.result.verdict == checker::Verdict::incomplete);
+  CHECK_THAT(small.result.message,
+             Catch::Contains("the bound on TOBcast's buffer is met (the trace): raise it "
+                             "(-p buffer=N, now 3, at most 8)"));
+  REQUIRE(small.result.trace);
+  CHECK(small.result.trace_kind == "bound");
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(small.system), *small.result.trace, &why));
+  INFO(why);
+  const auto enough = et::run("replica-consistency", {"buffer=4"}).result;
+  CHECK(enough.verdict == checker::Verdict::holds);
+  CHECK(enough.states == 120'790); // as with the default 6: the bound is never met
+}
+
 TEST_CASE("vn-emulation refines-vn: the emulation implements the abstract VN on the defaults",
           "[vn-emulation]") {
   const auto r = et::run("refines-vn", {}).result;
