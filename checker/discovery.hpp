@@ -40,9 +40,10 @@ public:
       slots_.reserve(end - first_);
     }
   }
-  // What the keys of the states up to `size` (the store's) take.
+  // What the keys of the states up to `size` (the store's) take: this much per state.
+  static constexpr std::size_t bytes_per_state = sizeof(std::uint64_t) + sizeof(std::uint32_t);
   std::size_t bytes(std::uint64_t size) const {
-    return size > first_ ? (size - first_) * (sizeof(std::uint64_t) + sizeof(std::uint32_t)) : 0;
+    return size > first_ ? (size - first_) * bytes_per_state : 0;
   }
 
   // A new state, found first by the step `key`.

@@ -9,6 +9,7 @@ void Worker::clear() {
   targets.clear();
   edge_count = 0;
   expanded = 0;
+  inserted = 0;
   error = nullptr;
 }
 

@@ -60,8 +60,10 @@ struct Level {
   std::uint32_t id_block() const { return concurrent() ? id_block_size : 1; }
   // The first id of the level being built.
   StateId first_new() const { return discovery.first(); }
-  // A state of the frontier.
-  const Word* frontier(StateId id) const { return states ? states->frontier(id) : store.state(id); }
+  // A state of the frontier (on the fingerprint store unpacked into `scratch`, words()).
+  const Word* frontier(StateId id, Word* scratch) const {
+    return states ? states->frontier(id, scratch) : store.state(id);
+  }
 };
 
 // Frontiers smaller than this are expanded by one worker.
@@ -77,7 +79,10 @@ inline std::size_t workers_for(std::size_t frontier_size, std::size_t available)
 class Worker {
 public:
   explicit Worker(std::uint32_t words)
-      : pending_states(words), scratch(words + 1, 0), representative(words + 1, 0) {}
+      : pending_states(words), scratch(words + 1, 0), representative(words + 1, 0),
+        unpacked(words, 0) {}
+
+  std::size_t writer = 0; // this worker's index: its arena of the fingerprint store's level
 
   // The level's results, in frontier order (its chunks are taken in order).
   std::vector<Edge> known_edges; // to states stored before the level (with record_edges)
@@ -86,7 +91,8 @@ public:
   std::vector<StateId> targets;  // new states that are targets
   std::uint64_t edge_count = 0;
   std::uint64_t expanded = 0;
-  StateStore::IdBlock ids; // the unused end is a hole in the level's ids
+  std::uint64_t inserted = 0; // new states this worker inserted in the level
+  StateStore::IdBlock ids;    // the unused end is a hole in the level's ids
   std::exception_ptr error;
   Allowance allowance;
   ZeroTimeReduction::Scratch reduction; // with a reduction
@@ -119,6 +125,26 @@ public:
         stuck.capacity() - stuck.size() >= stuck_room)
       return true;
     return grow_room(edge_room, stuck_room);
+  }
+
+  // Room in this worker's arena of the fingerprint store's level for `states` more states,
+  // within the allowance, which also counts the discovery keys of the states it inserts
+  // (they grow with the level, not at the growth gate).
+  bool make_state_room(const Level& level, std::size_t states) {
+    if (!level.states)
+      return true;
+    const std::size_t growth =
+        level.states->growth_bytes(writer, states) + states * Discovery::bytes_per_state;
+    if (!allowance.fits(own_bytes(level.states), growth))
+      return false;
+    level.states->make_room(writer, states);
+    return true;
+  }
+  // What this worker holds and adds in this level: bytes(), and on the fingerprint store
+  // (`states`) its arena of the level being built and the discovery keys of its states.
+  std::size_t own_bytes(const LevelStates* states) const {
+    return bytes() +
+           (states ? states->writer_bytes(writer) + inserted * Discovery::bytes_per_state : 0);
   }
 
 private:
@@ -155,6 +181,7 @@ private:
   std::uint64_t checks = 0;         // made by keep_going()
   std::vector<Word> scratch;        // the successor generator's
   std::vector<Word> representative; // a successor's (the canonical hook)
+  std::vector<Word> unpacked;       // a frontier state (the fingerprint store)
 };
 
 template <class Hooks>
@@ -183,7 +210,7 @@ bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::u
     const StateStore::Claim claim =
         level.store.find_or_insert(key_words, p.hash, ids, [&](StateId id, std::uint32_t slot) {
           if (level.states)
-            level.states->put(id, succ);
+            level.states->put(id, succ, writer);
           if (id + ids.size == ids.end) // a new block: its other ids are holes until taken
             level.discovery.holes(id + 1, ids.end);
           if (level.concurrent()) {
@@ -202,6 +229,7 @@ bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::u
     break;
   }
   if (fresh) {
+    ++inserted;
     if (is_target(hooks, succ))
       targets.push_back(to);
   } else if (to >= level.first_new() && level.concurrent()) {
@@ -234,7 +262,7 @@ bool Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
       batch.clear();
       const StateId batch_end = std::min<StateId>(end, id + batch_states);
       for (; id < batch_end && pending.size() < batch_successors; ++id) {
-        const Word* state = level.frontier(id);
+        const Word* state = level.frontier(id, unpacked.data());
         if (!expands(hooks, state))
           continue;
         const std::size_t first = pending.size();
@@ -247,7 +275,7 @@ bool Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
       for (const Expanded& e : batch) {
         // Edges pile up in the level buffers, which grow only within this worker's share
         // of the memory left.
-        if (!make_room(e.count, record_edges)) {
+        if (!make_room(e.count, record_edges) || !make_state_room(level, e.count)) {
           level.signals.out_of_memory = true;
           return false;
         }
@@ -337,7 +365,7 @@ void expand_level(std::span<Worker> workers, const Hooks& hooks, const Level& le
   const std::size_t held = budget.held();
   const std::size_t share = budget.share_left(held, used);
   for (Worker& w : workers)
-    w.allowance.begin_level(w.bytes(), share);
+    w.allowance.begin_level(w.own_bytes(level.states), share);
   const std::uint64_t n = level.end - level.begin;
   const std::uint64_t chunk =
       used == 1 ? n : std::clamp<std::uint64_t>(n / (used * 64), 256, 16384);

@@ -61,12 +61,16 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   ex.store.set_inserters(ex.threads, id_block_size);
   Progress progress(options.progress, options.task.empty() ? "exploring" : options.task);
   std::vector<Worker> workers(ex.threads, Worker(generator.words()));
+  for (std::size_t w = 0; w < workers.size(); ++w)
+    workers[w].writer = w;
+  level_states.set_writers(workers.size());
   Discovery discovery;
   // The memory limit counts the store, the parents, the edges, the discovery keys of the
   // level being built, the workers' buffers, (fingerprint store) the two levels' states,
   // and, while several workers build a level, what its renumbering will need at least
   // (level_end.hpp).
   bool concurrent = false;                // the level being expanded has several workers
+  std::size_t active_workers = 1;         // expanding it
   StateId level_begin = 0, level_end = 0; // its frontier
   MemoryBudget budget(memory_left(limits), [&] {
     std::size_t bytes =
@@ -119,7 +123,14 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
       discovery.forget_slots();
     discovery.make_room(ex.store.id_limit());
     ex.parent.grow(parents_room());
-    return reserve_states();
+    if (!reserve_states())
+      return false;
+    // What the store took is no longer left for the workers' own buffers: each gets an
+    // equal share of what is left now.
+    const std::size_t share = budget.share_left(budget.held(), active_workers);
+    for (std::size_t w = 0; w < active_workers; ++w)
+      workers[w].allowance.reshare(workers[w].own_bytes(states), share);
+    return true;
   };
   LevelSignals signals;
   StateId begin = 0, end = static_cast<StateId>(ex.store.size());
@@ -132,6 +143,7 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
     std::optional<StopReason> level_stop;
     for (std::size_t used = workers_for(end - begin, workers.size());;) {
       concurrent = used > 1;
+      active_workers = used;
       discovery.begin(first);
       discovery.make_room(ex.store.id_limit());
       if (!budget.grow_within(ex.parent, parents_room()) || !reserve_states()) {

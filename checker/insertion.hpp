@@ -60,7 +60,7 @@ public:
       return {Outcome::known, id};
     ex_.parent.push_back(parent);
     if (states_)
-      states_->put(id, state);
+      states_->put(id, state, 0);
     return {Outcome::fresh, id};
   }
 
@@ -68,10 +68,12 @@ private:
   // Room for one more state in the store, its parent and (fingerprint store) its state.
   bool room() {
     const std::uint64_t end = ex_.store.size() + 1;
-    if (states_ && !budget_.fits(states_->reserve_bytes(end)))
+    if (states_ && !budget_.fits(states_->reserve_bytes(end) + states_->growth_bytes(0, 1)))
       return false;
-    if (states_)
+    if (states_) {
       states_->reserve(end);
+      states_->make_room(0, 1);
+    }
     return budget_.fits(ex_.store.growth_bytes()) && budget_.grow_within(ex_.parent, 1);
   }
 

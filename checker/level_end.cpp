@@ -81,8 +81,8 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
     ex.stuck.insert(ex.stuck.end(), w.stuck.begin(), w.stuck.end());
   std::sort(ex.stuck.begin() + static_cast<std::ptrdiff_t>(before), ex.stuck.end());
   if (level.states && before == 0 && !ex.stuck.empty()) { // (the store has no states)
-    const Word* state = level.states->frontier(ex.stuck.front());
-    ex.first_stuck_state.assign(state, state + ex.state_words);
+    ex.first_stuck_state.resize(ex.state_words);
+    level.states->frontier(ex.stuck.front(), ex.first_stuck_state.data());
   }
   if (record_edges && !cut_short) {
     // Each frontier state's steps: to states stored before the level first, then to new
@@ -128,9 +128,10 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
       ex.edge_targets.resize(kept);
     }
     ex.found = found;
-    if (level.states)
-      ex.found_state.assign(level.states->built(*found),
-                            level.states->built(*found) + ex.state_words);
+    if (level.states) {
+      ex.found_state.resize(ex.state_words);
+      level.states->built(*found, ex.found_state.data());
+    }
     return StopReason::found;
   }
   if (stop)

@@ -117,6 +117,12 @@ public:
     peak_ = std::max(peak_, total);
     return true;
   }
+  // A new share while the level goes on (the store grew at the growth gate, taking from
+  // what was left): the worker, holding `held`, may grow by `share` more.
+  void reshare(std::size_t held, std::size_t share) {
+    if (share != MemoryBudget::unlimited)
+      limit_ = held + share;
+  }
   // The most the worker held in this level beyond what it held when the level began.
   std::size_t level_growth() const { return peak_ - start_; }
 
