@@ -81,8 +81,9 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
     ex.stuck.insert(ex.stuck.end(), w.stuck.begin(), w.stuck.end());
   std::sort(ex.stuck.begin() + static_cast<std::ptrdiff_t>(before), ex.stuck.end());
   if (level.states && before == 0 && !ex.stuck.empty()) { // (the store has no states)
-    ex.first_stuck_state.resize(ex.state_words);
-    level.states->frontier(ex.stuck.front(), ex.first_stuck_state.data());
+    std::vector<Word> unpacked(ex.state_words);
+    const Word* state = level.states->frontier(ex.stuck.front(), unpacked.data());
+    ex.first_stuck_state.assign(state, state + ex.state_words);
   }
   if (record_edges && !cut_short) {
     // Each frontier state's steps: to states stored before the level first, then to new

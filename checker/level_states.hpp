@@ -3,9 +3,10 @@
 // fingerprints only: those of the frontier being expanded and those of the level being
 // built, two levels and no more. Each is indexed by state id from its level's first id.
 //
-// A state of four words or more is kept packed, as its difference from a reference state
-// (the first state put, a start state): a mask of the words that differ, then those words
-// XOR the reference's.
+// A narrow state (fewer than four words) is kept as it is, at its id's place in an array
+// of the level. A wider one is kept packed, as its difference from a reference state (the
+// first state put, a start state): a mask of the words that differ, then those words XOR
+// the reference's.
 // The states of a model with wide states differ from a start state in few words (the
 // empty places of its queues stay as they start): vn-emulation's 43-word states of three
 // nodes keep about 11.5 words. Each writer (a worker, by its index) appends to an arena of
@@ -47,12 +48,19 @@ public:
   // A state of the frontier (ids frontier_first().. frontier_first() + frontier size - 1),
   // unpacked into `out` (words() words), which it returns.
   const Word* frontier(StateId id, Word* out) const {
+    if (!packed())
+      return frontier_.raw.data() + std::size_t{id - frontier_first_} * words_;
     unpack(frontier_, id - frontier_first_, out);
     return out;
   }
   StateId frontier_first() const { return frontier_first_; }
   // A state of the level being built, unpacked into `out`.
-  void built(StateId id, Word* out) const { unpack(building_, id - first_, out); }
+  void built(StateId id, Word* out) const {
+    if (!packed())
+      std::copy_n(building_.raw.data() + std::size_t{id - first_} * words_, words_, out);
+    else
+      unpack(building_, id - first_, out);
+  }
   StateId first() const { return first_; }
 
   // Places for the states of the level being built with ids below `end`; while nobody puts.
@@ -60,20 +68,24 @@ public:
     if (end <= first_ + room_)
       return;
     room_ = end - first_;
-    building_.place.reserve(room_);
+    if (packed())
+      building_.place.reserve(room_);
+    else
+      building_.raw.reserve(room_ * words_);
   }
   // The bytes reserve(end) adds to bytes().
   std::size_t reserve_bytes(std::uint64_t end) const {
-    return end <= first_ + room_ ? 0 : (end - first_ - room_) * sizeof(std::uint64_t);
+    return end <= first_ + room_ ? 0 : (end - first_ - room_) * place_bytes();
   }
 
   // Room in `writer`'s arena of the level being built for `states` more states (at most
   // this many words each: packed_words()), and the bytes that adds to bytes().
   std::size_t growth_bytes(std::size_t writer, std::size_t states) const {
-    return building_.arenas[writer].growth_bytes(states * packed_words());
+    return packed() ? building_.arenas[writer].growth_bytes(states * packed_words()) : 0;
   }
   void make_room(std::size_t writer, std::size_t states) {
-    building_.arenas[writer].grow(states * packed_words());
+    if (packed())
+      building_.arenas[writer].grow(states * packed_words());
   }
   // What `writer`'s arena of the level being built holds.
   std::size_t writer_bytes(std::size_t writer) const {
@@ -88,14 +100,13 @@ public:
       std::copy_n(state, words_, reference_.data());
       has_reference_ = true;
     }
+    if (!packed()) {
+      std::copy_n(state, words_, building_.raw.data() + std::size_t{id - first_} * words_);
+      return;
+    }
     MappedVector<Word>& arena = building_.arenas[writer];
     const std::size_t at = arena.size();
     building_.place[id - first_] = (std::uint64_t{writer} << offset_bits) | at;
-    if (masks_ == 0) { // a narrow state, kept as it is
-      for (std::uint32_t i = 0; i < words_; ++i)
-        arena.push_back(state[i]);
-      return;
-    }
     arena.resize(at + masks_);
     for (std::uint32_t m = 0; m < masks_; ++m)
       arena[at + m] = 0;
@@ -111,12 +122,19 @@ public:
   // The level being built, `count` ids with its holes, is renumbered (StateStore::reorder):
   // the state `order[i]` gets the id first() + i.
   void reorder(std::span<const StateId> order, std::uint64_t count) {
+    if (!packed()) {
+      const std::vector<Word> before(building_.raw.data(), building_.raw.data() + count * words_);
+      for (std::size_t i = 0; i < order.size(); ++i)
+        std::copy_n(before.data() + std::size_t{order[i] - first_} * words_, words_,
+                    building_.raw.data() + i * words_);
+      return;
+    }
     const std::vector<std::uint64_t> before(building_.place.data(), building_.place.data() + count);
     for (std::size_t i = 0; i < order.size(); ++i)
       building_.place[i] = before[order[i] - first_];
   }
   // What reorder() allocates.
-  std::size_t reorder_bytes(std::uint64_t count) const { return count * sizeof(std::uint64_t); }
+  std::size_t reorder_bytes(std::uint64_t count) const { return count * place_bytes(); }
 
   // The level built becomes the frontier (`count` states); the next level starts at id
   // first() + count. The frontier's buffers are used again for it.
@@ -131,13 +149,13 @@ public:
   }
 
   // What the two levels hold: the frontier's places, the places reserved for the level
-  // being built, and the arenas of both.
+  // being built, and the arenas of both (a narrow state's place is the state).
   std::size_t bytes() const {
     std::size_t arenas = 0;
     for (const Level* level : {&frontier_, &building_})
       for (const MappedVector<Word>& arena : level->arenas)
         arenas += arena.capacity() * sizeof(Word);
-    return (frontier_size_ + room_) * sizeof(std::uint64_t) + arenas;
+    return (frontier_size_ + room_) * place_bytes() + arenas;
   }
 
 private:
@@ -146,11 +164,17 @@ private:
   struct Level {
     MappedArray<std::uint64_t> place;
     std::vector<MappedVector<Word>> arenas;
+    MappedArray<Word> raw; // narrow states, words() per id
   };
   static constexpr int offset_bits = 44;
   // States of fewer words are kept as they are: a mask word would save too little.
   static constexpr std::uint32_t packed_from = 4;
 
+  bool packed() const { return masks_ != 0; }
+  // What one id takes in the level's array.
+  std::size_t place_bytes() const {
+    return packed() ? sizeof(std::uint64_t) : std::size_t{words_} * sizeof(Word);
+  }
   // The most words a packed state takes.
   std::uint32_t packed_words() const { return masks_ + words_; }
 
@@ -158,10 +182,6 @@ private:
     const std::uint64_t place = level.place[index];
     const Word* packed = level.arenas[place >> offset_bits].data() +
                          (place & ((std::uint64_t{1} << offset_bits) - 1));
-    if (masks_ == 0) {
-      std::copy_n(packed, words_, out);
-      return;
-    }
     const Word* next = packed + masks_;
     for (std::uint32_t i = 0; i < words_; ++i)
       out[i] = reference_[i] ^ ((packed[i / 64] >> (i % 64) & 1) ? *next++ : 0);
