@@ -7,6 +7,7 @@
 // of the level. A wider one is kept packed, as its difference from a reference state (the
 // first state put, a start state): a mask of the words that differ, then those words XOR
 // the reference's.
+//
 // The states of a model with wide states differ from a start state in few words (the
 // empty places of its queues stay as they start): vn-emulation's 43-word states of three
 // nodes keep about 11.5 words. Each writer (a worker, by its index) appends to an arena of

@@ -360,14 +360,14 @@ PropertyResult check_theorem_2(const Emulation& e, const checker::ExploreOptions
 
   // On the exact store every reached state is measured after the search. On the
   // fingerprint store the states are measured as the search meets them, and it stops at
-  // the first past a stated figure (its index, as the failure's text).
+  // the first past a stated figure (its name, as the failure's text).
   const auto slots_held = e.slots;
   const auto seen = std::make_shared<WorstSeen>();
   const Failure past_stated = [slots_held, figures](const tioa::State& s) {
     const Measured m = measure(*slots_held, s);
     for (int f = 0; f < 3; ++f)
       if (m.figure[f] > figures[f].stated)
-        return std::optional<std::string>(std::to_string(f));
+        return std::optional<std::string>(figures[f].name);
     return std::optional<std::string>();
   };
   const Watch watch = [slots_held, seen](const tioa::State& s, std::uint64_t fingerprint) {
@@ -386,7 +386,11 @@ PropertyResult check_theorem_2(const Emulation& e, const checker::ExploreOptions
     }
     if (run.failed) {
       const Measured m = measure(slots, tioa::State(run.ex.found_state.data(), 0));
-      const int f = std::stoi(run.why);
+      // The figure the search stopped on: the first past its stated value in that state,
+      // as past_stated found it.
+      int f = 0;
+      while (f < 2 && m.figure[f] <= figures[f].stated)
+        ++f;
       figures[f].first_past = run.failed;
       for (int k = 0; k < 3; ++k) {
         figures[k].worst = std::max(figures[k].worst, m.figure[k]);
