@@ -5,6 +5,7 @@
 #include "catalogue/fig7_figures.hpp"
 #include "models/vn_layer/layer.hpp"
 #include "proofs/vn_layer/layer_checks.hpp"
+#include "proofs/vn_layer/round_refinement.hpp"
 #include "tioa/operators.hpp"
 
 namespace catalogue {
@@ -80,7 +81,10 @@ ModelDefinition vn_layer_definition() {
                        "the targets, target-updates within d_MMT + 2d_v, CNs on target and VNs "
                        "alive at each round start (seed 002 §V-B)"},
       {"y-consistency", "VNs that compute targets in the same round agree on the counts they "
-                        "share (seed 002 §VI, line 232)"}};
+                        "share (seed 002 §VI, line 232)"},
+      {"round-refinement", "at every round start the counts per zone are the round-level "
+                           "system's from the round start before (assign per zone; "
+                           "docs/design/vn-layer.md §5.3, check 5)"}};
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     if (p.at("nbh") != 4 && p.at("nbh") != 8)
       return "nbh must be 4 or 8, not " + p.at("nbh").text();
@@ -115,6 +119,11 @@ ModelDefinition vn_layer_definition() {
         custom_property("y-consistency", "y_f(h) = y_g(h) for VNs computing in one round (002:232)",
                         [=](const checker::ExploreOptions& o) {
                           return vn_layer::check_y_consistency(c, system, o);
+                        }),
+        custom_property("round-refinement",
+                        "counts at each round start = the round-level system's from the one before",
+                        [=, cn_faults = p.at("cn_faults") == 1](const checker::ExploreOptions& o) {
+                          return vn_layer::check_round_refinement(c, system, o, cn_faults);
                         })};
     for (checker::Property& property : m.properties)
       property = counting_fig7(std::move(property), c.branch_tally);
@@ -123,7 +132,9 @@ ModelDefinition vn_layer_definition() {
   // 2×1 with 2 CNs at every placement (a second each); then from the corner, what breaks:
   // δ = 12 meets the paper's round rule but not the lattice's (README finding V1), ε = 0
   // lets a cn-update come after the exchange-trigger (C14), and a VN that may fail with CNs
-  // in its zone breaks (Y) (C10, finding V2).
+  // in its zone breaks (Y) (C10, finding V2). The layer follows the round-level system on
+  // 2×1; on 1×2 calctarget sends a CN onto the border the next zone owns (V4), which
+  // owned_ends=1 avoids.
   const auto corner = [](ParamValues p) {
     p.emplace("start", ParamValue::choice("corner"));
     return p;
@@ -134,7 +145,11 @@ ModelDefinition vn_layer_definition() {
              {corner({{"delta", 12}}), "round-timing", checker::Verdict::violated},
              {corner({{"eps", 0}}), "round-timing", checker::Verdict::violated},
              {corner({{"vn_fail", ParamValue::choice("any")}}), "y-consistency",
-              checker::Verdict::violated}};
+              checker::Verdict::violated},
+             {{}, "round-refinement", checker::Verdict::holds},
+             {corner({{"rows", 1}, {"cols", 2}}), "round-refinement", checker::Verdict::violated},
+             {corner({{"rows", 1}, {"cols", 2}, {"owned_ends", 1}}), "round-refinement",
+              checker::Verdict::holds}};
   return d;
 }
 

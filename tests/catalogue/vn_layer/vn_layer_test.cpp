@@ -8,6 +8,7 @@
 #include "catalogue/vn_layer.hpp"
 #include "checker/property.hpp"
 #include "checker/trace.hpp"
+#include "proofs/vn_layer/round_refinement.hpp"
 
 namespace vn_layer_test {
 
@@ -126,4 +127,57 @@ TEST_CASE("vn-layer reports count the branches of Fig. 7", "[vn-layer]") {
   CHECK(figure("Fig. 7 lines 19-22 boundary, reassigning") == "1");
   CHECK(figure("Fig. 7 lines 30-31 robots to a neighbour's centre") == "1");
   CHECK(figure("Fig. 7 lines 7-12 on the curve, reassigning") == "0");
+}
+
+// round-refinement's reference: assign per zone on the counts of a round start. On 2×1 (zone
+// 0 on the curve, zone 1 below it) the boundary branch sends ⌊(y − e)/|In|⌋ = 1 of two CNs
+// in zone 1 to zone 0; a zone on the curve with nobody lower keeps its CNs.
+TEST_CASE("vn-layer: the round-level counts one round later", "[vn-layer]") {
+  vn_layer::VnConfig c;
+  CHECK(vn_layer::counts_after_round(c, {0, 2}) == std::vector<int>{1, 1});
+  CHECK(vn_layer::counts_after_round(c, {1, 1}) == std::vector<int>{1, 1});
+  CHECK(vn_layer::counts_after_round(c, {2, 0}) == std::vector<int>{2, 0});
+  c.rows = 1;
+  CHECK(vn_layer::counts_after_round(c, {2}) == std::vector<int>{2});
+}
+
+TEST_CASE("vn-layer round-refinement: the layer follows the round-level system on 2x1, and "
+          "leaves it where calctarget sends a CN across a border",
+          "[vn-layer]") {
+  const auto figure = [](const checker::PropertyResult& r, const std::string& name) {
+    for (const auto& [key, value] : r.figures)
+      if (key == name)
+        return value;
+    return std::string("(none)");
+  };
+  {
+    const auto r = vt::run("round-refinement", {}).result;
+    CHECK(r.verdict == checker::Verdict::holds);
+    CHECK(r.states == 105'854);
+    CHECK(r.coverage.count == 225);
+    CHECK(figure(r, "round starts") == "1350");
+    CHECK(figure(r, "rounds checked") == "2025");
+  }
+  // 1×2: calctarget's line 36 sends the second CN to the far end of Γ_0, which zone 1 owns
+  // (V4): the next round starts with (1, 1) where assign moved nobody.
+  const vt::Run across = vt::run("round-refinement", {"start=corner", "rows=1", "cols=2"});
+  CHECK(across.result.verdict == checker::Verdict::violated);
+  CHECK_THAT(across.result.message,
+             Catch::Contains("a round starts with the counts (1, 1) where the round-level "
+                             "system gives (2, 0) from the counts (2, 0)"));
+  REQUIRE(across.result.trace);
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(across.system), *across.result.trace, &why));
+  INFO(why);
+  CHECK(across.result.trace->length() == 90);
+  CHECK(across.result.trace->steps.back().action == "tick");
+  // Aiming at the ends zone 0 owns (owned_ends=1, vlayer-mc's D14) keeps the layer on it.
+  CHECK(vt::run("round-refinement", {"start=corner", "rows=1", "cols=2", "owned_ends=1"})
+            .result.verdict == checker::Verdict::holds);
+  // Below both round rules the CN sent to zone 0 is not there when the round starts.
+  CHECK_THAT(vt::run("round-refinement", {"start=corner", "delta=10"}).result.message,
+             Catch::Contains("the counts (0, 2) where the round-level system gives (1, 1)"));
+  const auto faults = vt::run("round-refinement", {"start=corner", "cn_faults=1"}).result;
+  CHECK(faults.verdict == checker::Verdict::incomplete);
+  CHECK_THAT(faults.message, Catch::Contains("not checked: with cn_faults=1"));
 }
