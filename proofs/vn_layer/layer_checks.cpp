@@ -4,6 +4,7 @@
 
 #include "checker/property.hpp"
 #include "models/vn_layer/observers.hpp"
+#include "proofs/vn_layer/round_timing_figures.hpp"
 
 namespace vn_layer {
 
@@ -41,9 +42,14 @@ checker::PropertyResult check_observed(const VnConfig& c, const tioa::Automaton&
 
 checker::PropertyResult check_round_timing(const VnConfig& c, const tioa::Automaton& system,
                                            const checker::ExploreOptions& options) {
-  return check_observed(c, system, options, &Observers::round_timing_failure, "round-timing",
-                        "(T1)-(T4) of seed 002 §V-B: messages within their slots, CNs on "
-                        "target and VNs alive at every round start");
+  checker::PropertyResult r =
+      check_observed(c, system, options, &Observers::round_timing_failure, "round-timing",
+                     "(T1)-(T4) of seed 002 §V-B: messages within their slots, CNs on "
+                     "target and VNs alive at every round start");
+  // The figures need every step of every reachable state: only a run that held saw them.
+  if (r.verdict == checker::Verdict::holds)
+    add_round_timing_figures(c, system, options, r);
+  return r;
 }
 
 checker::PropertyResult check_y_consistency(const VnConfig& c, const tioa::Automaton& system,

@@ -181,3 +181,30 @@ TEST_CASE("vn-layer round-refinement: the layer follows the round-level system o
   CHECK(faults.verdict == checker::Verdict::incomplete);
   CHECK_THAT(faults.message, Catch::Contains("not checked: with cn_faults=1"));
 }
+
+// round-timing's measured figures: every bound of §V-B is met with no slack on the lattice,
+// and a CN reaches its target two quanta before the round ends (then VN_0 takes d_r = 1 to
+// restart: δ = 12 leaves none, V1).
+TEST_CASE("vn-layer round-timing: the worst times against the stated ones", "[vn-layer]") {
+  const auto figures = [](const std::vector<std::string>& settings) {
+    const auto r = vt::run("round-timing", settings).result;
+    CHECK(r.verdict == checker::Verdict::holds);
+    std::vector<std::string> out;
+    for (const char* name : {"cn-update delivered", "vn-update delivered",
+                             "target-update after its trigger", "CN on target"})
+      for (const char* which : {" measured", " stated"})
+        for (const auto& [key, value] : r.figures)
+          if (key == std::string(name) + which)
+            out.push_back(value);
+    return out;
+  };
+  CHECK(figures({}) == std::vector<std::string>{"1", "1 (d_v)", "5", "5 (d_MMT + 3d_v + eps)", "3",
+                                                "3 (d_MMT + 2d_v)", "11", "13 (delta)"});
+  CHECK(figures({"start=corner", "d_v=2", "delta=20"}) ==
+        std::vector<std::string>{"2", "2 (d_v)", "8", "8 (d_MMT + 3d_v + eps)", "5",
+                                 "5 (d_MMT + 2d_v)", "16", "20 (delta)"});
+  // A run that breaks a clause stops early: it measures nothing.
+  const auto broken = vt::run("round-timing", {"start=corner", "delta=12"}).result;
+  for (const auto& [key, value] : broken.figures)
+    CHECK(key.find("measured") == std::string::npos);
+}
