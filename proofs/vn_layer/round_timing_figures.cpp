@@ -36,7 +36,6 @@ void add_round_timing_figures(const VnConfig& c, const tioa::Automaton& system,
   // Which deliveries are timed, by action.
   const auto& actions = system.actions();
   std::vector<Timed> timed(actions.size(), Timed::none);
-  std::vector<int> owner(actions.size(), -1);
   const Lattice lattice = c.lattice();
   for (std::size_t a = 0; a < actions.size(); ++a) {
     for (RegionId h = 0; h < lattice.regions(); ++h) {
@@ -46,10 +45,8 @@ void add_round_timing_figures(const VnConfig& c, const tioa::Automaton& system,
         timed[a] = Timed::vn_update;
     }
     for (int i = 0; i < c.cns; ++i)
-      if (actions[a].name == names::receive_target_update(i)) {
+      if (actions[a].name == names::receive_target_update(i))
         timed[a] = Timed::target_update;
-        owner[a] = i;
-      }
   }
   // realtime mod δ: VLBcast's copy (C21), which no failure stops.
   const auto phase = tioa::find_variable<int>(system, "VLBcast.phase");
@@ -78,12 +75,12 @@ void add_round_timing_figures(const VnConfig& c, const tioa::Automaton& system,
       if (step.is_tick()) {
         const tioa::State after(to, 0);
         const int at = after[phase] == 0 ? c.delta : after[phase];
-        for (int i = 0; i < c.cns; ++i)
-          if (!after.is_bottom(target[static_cast<std::size_t>(i)]) &&
-              after[x[static_cast<std::size_t>(i)]] == after[target[static_cast<std::size_t>(i)]] &&
-              (before.is_bottom(target[static_cast<std::size_t>(i)]) ||
-               before[x[static_cast<std::size_t>(i)]] !=
-                   before[target[static_cast<std::size_t>(i)]]))
+        // A CN that was not on its target before the tick and is after it.
+        const auto on_target = [&](const tioa::State& s, std::size_t i) {
+          return !s.is_bottom(target[i]) && s[x[i]] == s[target[i]];
+        };
+        for (std::size_t i = 0; i < x.size(); ++i)
+          if (on_target(after, i) && !on_target(before, i))
             arrival.note(at);
         return;
       }
