@@ -52,7 +52,8 @@ struct Level {
   Progress& progress;   // drawn by the first worker only
   LevelSignals& signals;
   const ZeroTimeReduction* reduction; // null: every successor
-  LevelStates* states; // the fingerprint store's two levels (nullptr: the exact store)
+  LevelStates* states;              // the fingerprint store's two levels (nullptr: the exact store)
+  bool stop_at_state_limit = false; // ExploreOptions::stop_at_state_limit
 
   bool concurrent() const { return workers > 1; }
   // The ids a worker takes at a time (see StateStore::IdBlock): one when it is alone, so
@@ -198,11 +199,14 @@ bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::u
       return false;
     if (level.max_states && level.store.size() >= level.max_states) {
       // At the state limit only stored states are found; a new one ends the run, and the
-      // level goes on for the counts.
+      // level goes on for the counts (unless the run stops at once: Level::stop_at_state_limit).
       const auto known = level.store.find(key_words, p.hash);
       if (!known) {
         level.signals.state_limit = true;
-        return true;
+        if (!level.stop_at_state_limit)
+          return true;
+        level.gate.stop();
+        return false;
       }
       to = *known;
       break;

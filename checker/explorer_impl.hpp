@@ -151,12 +151,14 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
         break;
       }
       GrowthGate gate(used, grow_store);
-      const Level level{generator, ex.store, discovery,  ex.parent, gate,
-                        begin,     end,      max_states, ex.depth,  used,
-                        limits,    progress, signals,    reduction, states};
+      const Level level{generator, ex.store,  discovery, ex.parent,
+                        gate,      begin,     end,       max_states,
+                        ex.depth,  used,      limits,    progress,
+                        signals,   reduction, states,    options.stop_at_state_limit};
       const std::span<Worker> active(workers.data(), used);
       expand_level(active, hooks, level, budget);
-      if (signals.state_limit && used > 1 && !signals.out_of_time && !signals.out_of_memory) {
+      if (signals.state_limit && used > 1 && !signals.out_of_time && !signals.out_of_memory &&
+          !options.stop_at_state_limit) {
         // Which states fit under the limit depends on the race between the workers: the
         // level is done again by one worker, which inserts them in breadth-first order.
         ex.store.truncate(first);

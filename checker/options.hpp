@@ -81,7 +81,13 @@ struct ExploreOptions {
   bool por = false;
   StoreKind store = StoreKind::exact;
   bool progress = false; // a progress line on stderr (only when it is a terminal)
-  std::string task;      // shown in the progress line
+  // At the state limit a run finishes its last level for the edge counts and, with several
+  // workers, does it again with one so that the states kept are the first in breadth-first
+  // order. A run that only needs to learn that there are more states than the limit (a
+  // listing that falls back to sampling) stops at the first state past it instead: on a
+  // model with thousands of successors per state the last level costs minutes.
+  bool stop_at_state_limit = false;
+  std::string task; // shown in the progress line
 };
 
 // interrupted: a stop was requested from outside (checker/interrupt.hpp).

@@ -27,6 +27,11 @@ EnvironmentStates environment_states(const tioa::Automaton& env, std::uint64_t l
   const std::uint32_t words = env.words();
   checker::ExploreOptions bounded = options;
   bounded.limits.max_states = limit;
+  // The listing prepares the start states; it is not one of the property's explorations,
+  // whose states --max-states bounds (the budget): it has its own bound, and stops at the
+  // first state past it, since then it is not used. Time and memory limits hold here too.
+  bounded.limits.states_budget = nullptr;
+  bounded.stop_at_state_limit = true;
   const checker::Exploration reach = checker::explore(generator, env.start(), bounded);
   EnvironmentStates out{{words, {}}, reach.complete()};
   if (out.all) {
@@ -122,6 +127,7 @@ std::optional<bool> is_u_start(const VlConfig& config, const ArbitraryStarts& a,
     projected.set_code(v.slot(), from.code(layer.layout().find(v.name)->slot()));
   checker::ExploreOptions options;
   options.limits.max_states = limit;
+  options.stop_at_state_limit = true;
   const tioa::SuccessorGenerator generator(env);
   // The search stops at the state (a target).
   const checker::Exploration reach = checker::explore(
