@@ -291,6 +291,25 @@ TEST_CASE("explore: a state limit stops the run, incomplete", "[checker][explore
       require_same_states(e, run(fischer.system, options));
     }
   }
+  SECTION("stop_at_state_limit: the last level is not finished, for any thread count") {
+    const auto fischer = fischer::build(6, 1, 2);
+    options.limits.max_states = 30000; // inside a level of more than 4096 states
+    const Exploration finished = run(fischer.system, options);
+    options.stop_at_state_limit = true;
+    for (unsigned threads : {1u, 2u, 4u}) {
+      INFO(threads << " threads");
+      options.threads = threads;
+      const Exploration e = run(fischer.system, options);
+      CHECK(e.stop == StopReason::state_limit);
+      CHECK_FALSE(e.complete());
+      // Alone, the worker stops at the limit; with several, the ids the others took in
+      // blocks but did not fill are dropped, and one may insert while another meets it.
+      if (threads == 1)
+        CHECK(e.store.size() == 30000);
+      CHECK(e.store.size() <= 30000 + threads * id_block_size);
+      CHECK(e.edges < finished.edges); // the level's other states were not expanded
+    }
+  }
   SECTION("a limit of exactly the state count changes nothing") {
     options.limits.max_states = 1024;
     const Exploration e = run(ring.system, options);
