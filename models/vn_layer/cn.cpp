@@ -37,6 +37,10 @@ tioa::Automaton cn(const VnConfig& c, int i) {
   const auto moved_zone = [=](const State& s) {
     return !s[failed] && lattice.region_of(s[x]) != s[zone];
   };
+  // The footprint of a send at the phase of `counter` (its guard `due` and its binder of x).
+  const auto sends = [=](tioa::Footprint& f, tioa::Variable<int> counter) {
+    f.reads(failed).reads(clock.phase).reads(counter).reads(x).sets(counter, next_round);
+  };
 
   // Internal init_i (lines 20–26): round, next-exch, next-target ← ⌈realtime/δ⌉, x* ← x_i.
   a.internal(names::init(i))
@@ -47,6 +51,10 @@ tioa::Automaton cn(const VnConfig& c, int i) {
         s[next_exch] = first;
         s[next_target] = first;
         s[target] = s[x];
+      })
+      .footprint([=](const Params&, tioa::Footprint& f) {
+        f.reads(failed).reads(round).reads(clock.phase).reads(x);
+        f.writes(round).writes(next_exch).writes(next_target).writes(target);
       });
   // Input receive(⟨target-update, target⟩)_i (lines 28–32): x* ← target(i). VLBcast hands
   // each CN its own entry only, and none where target(i) = null (C1).
@@ -58,12 +66,16 @@ tioa::Automaton cn(const VnConfig& c, int i) {
         const int since_trigger = s[clock.phase] - target_phase;
         if (since_trigger < 0 || since_trigger > reply_bound)
           s[late_target_update] = true;
+      })
+      .footprint([=](const Params& m, tioa::Footprint& f) {
+        f.reads(failed).reads(clock.phase).sets(target, m[1]).sets(late_target_update, true);
       });
   // Output send(⟨cn-update, i, x_i, round⟩)_i (lines 34–38): realtime = round·δ.
   a.output(names::send_cn_update(i), {{"loc", 0, points - 1}})
       .pre([=](const State& s, const Params& m) { return due(s, round, 0) && m[0] == s[x]; })
       .bind("loc", x)
-      .eff([=](State& s, const Params&) { s[round] = next_round; });
+      .eff([=](State& s, const Params&) { s[round] = next_round; })
+      .footprint([=](const Params&, tioa::Footprint& f) { sends(f, round); });
   // Output send(⟨exchange-trigger, x_i, next-exch⟩)_i (lines 40–44): realtime =
   // next-exch·δ + d_v + ε.
   a.output(names::send_exchange_trigger(i), {{"loc", 0, points - 1}})
@@ -71,7 +83,8 @@ tioa::Automaton cn(const VnConfig& c, int i) {
         return due(s, next_exch, exchange_phase) && m[0] == s[x];
       })
       .bind("loc", x)
-      .eff([=](State& s, const Params&) { s[next_exch] = next_round; });
+      .eff([=](State& s, const Params&) { s[next_exch] = next_round; })
+      .footprint([=](const Params&, tioa::Footprint& f) { sends(f, next_exch); });
   // Output send(⟨target-trigger, x_i, next-target⟩)_i (lines 46–50): realtime =
   // next-target·δ + d_MMT + 3d_v + 2ε.
   a.output(names::send_target_trigger(i), {{"loc", 0, points - 1}})
@@ -79,7 +92,8 @@ tioa::Automaton cn(const VnConfig& c, int i) {
         return due(s, next_target, target_phase) && m[0] == s[x];
       })
       .bind("loc", x)
-      .eff([=](State& s, const Params&) { s[next_target] = next_round; });
+      .eff([=](State& s, const Params&) { s[next_target] = next_round; })
+      .footprint([=](const Params&, tioa::Footprint& f) { sends(f, next_target); });
   // Output enter_i(h): the zone CN_i stands in, for VLBcast's and the VN restarts' sake (C21).
   a.output(names::enter(i), {{"h", 0, lattice.regions() - 1}})
       .pre([=](const State& s, const Params& m) {
@@ -89,7 +103,10 @@ tioa::Automaton cn(const VnConfig& c, int i) {
             [=](const State& s, const Params&) -> std::optional<std::int32_t> {
               return lattice.region_of(s[x]);
             })
-      .eff([=](State& s, const Params& m) { s[zone] = m[0]; });
+      .eff([=](State& s, const Params& m) { s[zone] = m[0]; })
+      .footprint([=](const Params& m, tioa::Footprint& f) {
+        f.reads(failed).reads(x).reads(zone).sets(zone, m[0]);
+      });
 
   // fail_i / recover_i (001:36, 002:35): inactive mode; seed 002 also sets the internal
   // variables to their initial values (C8: cn_fail=reset, the default).

@@ -19,6 +19,12 @@ struct ClientPlace {
   tioa::VariableArray<int> age, loc, round;
 };
 
+// What a step on CN_i's message in `place` reads and writes: the place's variables of i.
+void touches(tioa::Footprint& f, const ClientPlace& place, int i) {
+  f.reads(place.pending[i]).reads(place.loc[i]).reads(place.round[i]);
+  f.writes(place.pending[i]).writes(place.age[i]).writes(place.loc[i]).writes(place.round[i]);
+}
+
 ClientPlace client_place(tioa::Automaton& a, const std::string& kind, int n, int points, int d_v) {
   return {a.booleans(kind + "_pending", n, false), a.clocks(kind + "_age", n, d_v, 0),
           a.integers(kind + "_loc", n, 0, points - 1, 0),
@@ -62,14 +68,19 @@ tioa::Automaton vlbcast(const VnConfig& c) {
   for (const auto& [place_pointer, send_name] : client_sends) {
     const ClientPlace place = *place_pointer;
     for (int i = 0; i < n; ++i)
-      a.input(send_name(i), {{"loc", 0, points - 1}}).eff([=](State& s, const Params& m) {
-        if (s[place.pending[i]])
-          s[overflow] = true;
-        s[place.pending[i]] = true;
-        s[place.age[i]] = 0;
-        s[place.loc[i]] = m[0];
-        s[place.round[i]] = this_round; // the CN sends at the round it is in (Fig. 2)
-      });
+      a.input(send_name(i), {{"loc", 0, points - 1}})
+          .eff([=](State& s, const Params& m) {
+            if (s[place.pending[i]])
+              s[overflow] = true;
+            s[place.pending[i]] = true;
+            s[place.age[i]] = 0;
+            s[place.loc[i]] = m[0];
+            s[place.round[i]] = this_round; // the CN sends at the round it is in (Fig. 2)
+          })
+          .footprint([=](const Params&, tioa::Footprint& f) {
+            touches(f, place, i);
+            f.sets(overflow, true);
+          });
   }
   for (const auto& [place_pointer, receive_name] : client_receives) {
     const ClientPlace place = *place_pointer;
@@ -95,7 +106,8 @@ tioa::Automaton vlbcast(const VnConfig& c) {
             s[place.age[i]] = 0;
             s[place.loc[i]] = 0;
             s[place.round[i]] = 0;
-          });
+          })
+          .footprint([=](const Params& m, tioa::Footprint& f) { touches(f, place, m[0]); });
   }
 
   for (int h = 0; h < regions; ++h) {
@@ -109,22 +121,32 @@ tioa::Automaton vlbcast(const VnConfig& c) {
           s[vn_age[h]] = 0;
           s[vn_count[h]] = m[0];
           s[vn_round[h]] = m[1];
+        })
+        .footprint([=](const Params& m, tioa::Footprint& f) {
+          f.reads(vn_mask[h]).sets(vn_mask[h], everyone).sets(vn_age[h], 0);
+          f.sets(vn_count[h], m[0]).sets(vn_round[h], m[1]).sets(overflow, true);
         });
     std::vector<tioa::ParamRange> entries;
     for (int i = 0; i < n; ++i)
       entries.push_back({"target_" + std::to_string(i), 0, points});
-    a.input(names::send_target_update(h), entries).eff([=](State& s, const Params& m) {
-      if (s[tu_mask[h]] != 0)
-        s[overflow] = true;
-      int receivers = 0;
-      for (int i = 0; i < n; ++i) {
-        const bool entry = m[static_cast<std::size_t>(i)] != points; // null: no delivery (C1)
-        receivers |= entry ? 1 << i : 0;
-        s[tu_target[h * n + i]] = entry ? m[static_cast<std::size_t>(i)] : 0;
-      }
-      s[tu_mask[h]] = receivers;
-      s[tu_age[h]] = 0;
-    });
+    a.input(names::send_target_update(h), entries)
+        .eff([=](State& s, const Params& m) {
+          if (s[tu_mask[h]] != 0)
+            s[overflow] = true;
+          int receivers = 0;
+          for (int i = 0; i < n; ++i) {
+            const bool entry = m[static_cast<std::size_t>(i)] != points; // null: no delivery (C1)
+            receivers |= entry ? 1 << i : 0;
+            s[tu_target[h * n + i]] = entry ? m[static_cast<std::size_t>(i)] : 0;
+          }
+          s[tu_mask[h]] = receivers;
+          s[tu_age[h]] = 0;
+        })
+        .footprint([=](const Params&, tioa::Footprint& f) {
+          f.reads(tu_mask[h]).writes(tu_mask[h]).sets(tu_age[h], 0).sets(overflow, true);
+          for (int i = 0; i < n; ++i)
+            f.writes(tu_target[h * n + i]);
+        });
   }
   // receive(⟨vn-update, g, n, round⟩)_h from each neighbour g.
   for (int h = 0; h < regions; ++h)
@@ -154,6 +176,11 @@ tioa::Automaton vlbcast(const VnConfig& c) {
             s[vn_count[g]] = 0;
             s[vn_round[g]] = 0;
           }
+        })
+        .footprint([=](const Params& m, tioa::Footprint& f) {
+          const int g = m[0];
+          f.reads(vn_mask[g]).reads(vn_count[g]).reads(vn_round[g]).writes(vn_mask[g]);
+          f.sets(vn_age[g], 0).sets(vn_count[g], 0).sets(vn_round[g], 0);
         });
   // receive(⟨target-update, target⟩)_i: CN_i's entry of VN_h's map.
   for (int i = 0; i < n; ++i)
@@ -171,6 +198,11 @@ tioa::Automaton vlbcast(const VnConfig& c) {
           s[tu_target[h * n + i]] = 0;
           if (s[tu_mask[h]] == 0)
             s[tu_age[h]] = 0;
+        })
+        .footprint([=](const Params& m, tioa::Footprint& f) {
+          const int h = m[0];
+          f.reads(tu_mask[h]).reads(tu_target[h * n + i]).writes(tu_mask[h]);
+          f.sets(tu_target[h * n + i], 0).sets(tu_age[h], 0);
         });
 
   a.trajectories(

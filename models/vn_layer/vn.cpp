@@ -111,6 +111,17 @@ tioa::Automaton vn(const VnConfig& c, RegionId h) {
       s.set_bottom(map[static_cast<std::size_t>(last)][i]);
     s[task] = 0; // the next message, if any, has d_MMT again
   };
+  // The footprint of send(m)_h: its guard reads the head, pop moves every place up.
+  const auto pops = [=](tioa::Footprint& f) {
+    f.reads(failed).sets(task, 0);
+    for (int slot = 0; slot < buffer_slots; ++slot) {
+      const auto& targets = map[static_cast<std::size_t>(slot)];
+      f.reads(kind[static_cast<std::size_t>(slot)]).writes(kind[static_cast<std::size_t>(slot)]);
+      f.reads(count[slot]).writes(count[slot]).reads(count_round[slot]).writes(count_round[slot]);
+      for (int i = 0; i < n; ++i)
+        f.reads(targets[i]).writes(targets[i]);
+    }
+  };
   const auto reset = [=](State& s) { // "setting the automaton to an initial state"
     for (int i = 0; i < n; ++i) {
       s.set_bottom(M[i]);
@@ -149,6 +160,10 @@ tioa::Automaton vn(const VnConfig& c, RegionId h) {
         s[M_round[m[0]]] = m[2];
         if (!s.is_bottom(exchanged) && s[exchanged] == m[2])
           s[late_cn_update] = true; // (T1), 002:121
+      })
+      .footprint([=](const Params& m, tioa::Footprint& f) {
+        f.reads(failed).reads(exchanged).sets(M[m[0]], m[1]).sets(M_round[m[0]], m[2]);
+        f.sets(late_cn_update, true);
       });
   // Input receive(⟨exchange-trigger, loc, round⟩)_h (lines 30–38).
   a.input(names::receive_exchange_trigger(h),
@@ -185,6 +200,12 @@ tioa::Automaton vn(const VnConfig& c, RegionId h) {
             if (!s.is_bottom(y_round) && s[y_round] == m[2])
               s[late_vn_update] = true; // (T2), 002:158
           }
+      })
+      .footprint([=](const Params& m, tioa::Footprint& f) {
+        f.reads(failed).reads(y_round).sets(late_vn_update, true);
+        for (int j = 0; j < own; ++j)
+          if (zones[static_cast<std::size_t>(j)] == m[0])
+            f.sets(V_num[j], m[1]).sets(V_round[j], m[2]);
       });
   // Input receive(⟨target-trigger, loc, round⟩)_h (lines 44–54).
   const auto memo = std::make_shared<const vlayer_mc::TargetMemo>(c.targets_config(), h);
@@ -233,7 +254,8 @@ tioa::Automaton vn(const VnConfig& c, RegionId h) {
       })
       .bind("n", count[0])
       .bind("round", count_round[0])
-      .eff([=](State& s, const Params&) { pop(s); });
+      .eff([=](State& s, const Params&) { pop(s); })
+      .footprint([=](const Params&, tioa::Footprint& f) { pops(f); });
   std::vector<tioa::ParamRange> entries;
   for (int i = 0; i < n; ++i) // a point, or `points` for null
     entries.push_back({"target_" + std::to_string(i), 0, points});
@@ -249,7 +271,8 @@ tioa::Automaton vn(const VnConfig& c, RegionId h) {
         }
         return true;
       })
-      .eff([=](State& s, const Params&) { pop(s); });
+      .eff([=](State& s, const Params&) { pop(s); })
+      .footprint([=](const Params&, tioa::Footprint& f) { pops(f); });
   for (int i = 0; i < n; ++i)
     send_targets.bind("target_" + std::to_string(i),
                       [=](const State& s, const Params&) -> std::optional<std::int32_t> {

@@ -22,6 +22,11 @@ tioa::Automaton zones(const VnConfig& c) {
         return true;
     return false;
   };
+  // What `occupied` reads.
+  const auto reads_occupancy = [=](tioa::Footprint& f) {
+    for (int i = 0; i < n; ++i)
+      f.reads(active[i]).reads(zone[i]);
+  };
   // A zone that has lost its last active CN starts counting again from 0.
   const auto restart_counts = [=](State& s) {
     for (int h = 0; h < regions; ++h)
@@ -29,10 +34,17 @@ tioa::Automaton zones(const VnConfig& c) {
         s[occupied_for[h]] = 0;
   };
   for (int i = 0; i < n; ++i) {
-    a.input(names::enter(i), {{"h", 0, regions - 1}}).eff([=](State& s, const Params& m) {
-      s[zone[i]] = m[0];
-      restart_counts(s);
-    });
+    a.input(names::enter(i), {{"h", 0, regions - 1}})
+        .eff([=](State& s, const Params& m) {
+          s[zone[i]] = m[0];
+          restart_counts(s);
+        })
+        .footprint([=](const Params& m, tioa::Footprint& f) {
+          reads_occupancy(f);
+          f.sets(zone[i], m[0]);
+          for (int h = 0; h < regions; ++h)
+            f.sets(occupied_for[h], 0);
+        });
     a.input(names::fail_cn(i)).eff([=](State& s, const Params&) {
       s[active[i]] = false;
       restart_counts(s);
@@ -50,12 +62,20 @@ tioa::Automaton zones(const VnConfig& c) {
         .eff([=](State& s, const Params&) {
           s[vn_failed[h]] = true;
           s[occupied_for[h]] = 0; // the d_r of C9 counts from the failure
+        })
+        .footprint([=](const Params&, tioa::Footprint& f) {
+          reads_occupancy(f);
+          f.reads(vn_failed[h]).sets(vn_failed[h], true).sets(occupied_for[h], 0);
         });
     // C9: "If VN_h is failed and a CN is in B_h and remains active in the zone for d_r
     // time, then a recover_h occurs within that d_r time" (002:83).
     a.output(names::recover_vn(h))
         .pre([=](const State& s, const Params&) { return s[vn_failed[h]] && occupied(s, h); })
-        .eff([=](State& s, const Params&) { s[vn_failed[h]] = false; });
+        .eff([=](State& s, const Params&) { s[vn_failed[h]] = false; })
+        .footprint([=](const Params&, tioa::Footprint& f) {
+          reads_occupancy(f);
+          f.reads(vn_failed[h]).sets(vn_failed[h], false);
+        });
   }
   a.trajectories(
       [=](State& s) {

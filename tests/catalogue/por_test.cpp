@@ -112,3 +112,33 @@ TEST_CASE("vlayer-mc: fewer states and the same time-lock verdict with --por",
   CHECK(full_repaired.states == 2706);
   CHECK(reduced_repaired.states == 630);
 }
+
+// [slow]: about 10 s here, minutes under the sanitizers.
+TEST_CASE("vn-layer: its footprints let the reduction act, with the same verdicts",
+          "[catalogue][vn-layer][por][slow]") {
+  // 2x1, every placement: 105,854 states in full, 90,247 reduced (no-timelock); the
+  // invariants read more, so fewer steps commute with what they read.
+  for (const std::string property : {"no-timelock", "round-timing", "y-consistency"}) {
+    INFO(property);
+    const auto [full, reduced] = both_ways("vn-layer", {}, property);
+    CHECK(full.states == 105854);
+    CHECK(reduced.verdict == full.verdict);
+    CHECK(reduced.verdict == checker::Verdict::holds);
+    CHECK(reduced.states <= full.states);
+    if (property == "no-timelock")
+      CHECK(reduced.states == 90247);
+  }
+  const auto& definition = catalogue::builtin_models().find("vn-layer");
+  const auto instance = definition.build(catalogue::resolve_params(definition, {}));
+  CHECK(checker_test::time_passing_states(instance.system, true) ==
+        checker_test::time_passing_states(instance.system, false));
+  // A violation found on the reduced graph is a trace of the model.
+  const auto [full_any, reduced_any] = both_ways("vn-layer", {"vn_fail=any"}, "round-timing");
+  CHECK(full_any.verdict == checker::Verdict::violated);
+  REQUIRE(reduced_any.verdict == checker::Verdict::violated);
+  REQUIRE(reduced_any.trace);
+  const auto any = definition.build(catalogue::resolve_params(definition, {"vn_fail=any"}));
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(any.system), *reduced_any.trace, &why));
+  INFO(why);
+}
