@@ -92,6 +92,13 @@ std::string reachable_states(std::uint64_t count, std::uint64_t reduced_states) 
 
 void mark_incomplete(PropertyResult& result, const Exploration& ex, const std::string& covered) {
   result.verdict = Verdict::incomplete;
+  if (ex.stop == StopReason::state_limit && ex.store.size() == 0) {
+    // Only a spent budget stops a run before its first state (Limits::states_left).
+    result.message = "state limit reached before this exploration began: the property's "
+                     "earlier explorations spent --max-states; " +
+                     covered;
+    return;
+  }
   result.message = std::string(describe(ex.stop)) + " after " + std::to_string(ex.store.size()) +
                    " states to depth " + std::to_string(ex.depth) + ": " + covered;
 }

@@ -107,6 +107,27 @@ TEST_CASE("invariant: a limit gives incomplete, never holds", "[checker][invaria
             .verdict == Verdict::incomplete);
 }
 
+TEST_CASE("a property's later exploration on a spent state budget says so",
+          "[checker][invariant][limits]") {
+  // The runs of one property share --max-states (Limits::states_budget): the first spends
+  // it, and the second stops before its first state with a message that says why.
+  const auto ring = token_ring::build(5, 4);
+  ExploreOptions options;
+  options.limits.max_states = 10;
+  options.limits.states_budget = std::make_shared<StatesBudget>();
+  options.limits.states_budget->max = 10;
+  const auto always = [](const State&) { return true; };
+  const PropertyResult first = check_invariant(ring.system, always, options);
+  options.limits.spend_states(first.states);
+  CHECK(first.message.rfind("state limit reached after 10 states", 0) == 0);
+  const PropertyResult second = check_invariant(ring.system, always, options);
+  CHECK(second.verdict == Verdict::incomplete);
+  CHECK(second.states == 0);
+  CHECK(second.message.rfind("state limit reached before this exploration began: the "
+                             "property's earlier explorations spent --max-states",
+                             0) == 0);
+}
+
 // ----------------------------------------------------------------------------- deadlock
 
 TEST_CASE("deadlock: holds when every reachable state can move", "[checker][deadlock]") {
