@@ -133,23 +133,26 @@ ModelDefinition vn_layer_definition() {
   // δ = 12 meets the paper's round rule but not the lattice's (README finding V1), ε = 0
   // lets a cn-update come after the exchange-trigger (C14), and a VN that may fail with CNs
   // in its zone breaks (Y) (C10, finding V2). The layer follows the round-level system on
-  // 2×1; on 1×2 calctarget sends a CN onto the border the next zone owns (V4), which
-  // owned_ends=1 avoids.
+  // 2×1; on 1×2 (from the corner) and 2×2 (every placement, 1.5 s each) calctarget sends
+  // a CN onto the border the next zone owns (V4), which owned_ends=1 avoids.
   const auto corner = [](ParamValues p) {
     p.emplace("start", ParamValue::choice("corner"));
     return p;
   };
-  d.suite = {{{}, "no-timelock", checker::Verdict::holds},
-             {{}, "round-timing", checker::Verdict::holds},
-             {{}, "y-consistency", checker::Verdict::holds},
-             {corner({{"delta", 12}}), "round-timing", checker::Verdict::violated},
-             {corner({{"eps", 0}}), "round-timing", checker::Verdict::violated},
-             {corner({{"vn_fail", ParamValue::choice("any")}}), "y-consistency",
-              checker::Verdict::violated},
-             {{}, "round-refinement", checker::Verdict::holds},
-             {corner({{"rows", 1}, {"cols", 2}}), "round-refinement", checker::Verdict::violated},
-             {corner({{"rows", 1}, {"cols", 2}, {"owned_ends", 1}}), "round-refinement",
-              checker::Verdict::holds}};
+  d.suite = {
+      {{}, "no-timelock", checker::Verdict::holds},
+      {{}, "round-timing", checker::Verdict::holds},
+      {{}, "y-consistency", checker::Verdict::holds},
+      {corner({{"delta", 12}}), "round-timing", checker::Verdict::violated},
+      {corner({{"eps", 0}}), "round-timing", checker::Verdict::violated},
+      {corner({{"vn_fail", ParamValue::choice("any")}}), "y-consistency",
+       checker::Verdict::violated},
+      {{}, "round-refinement", checker::Verdict::holds},
+      {corner({{"rows", 1}, {"cols", 2}}), "round-refinement", checker::Verdict::violated},
+      {corner({{"rows", 1}, {"cols", 2}, {"owned_ends", 1}}), "round-refinement",
+       checker::Verdict::holds},
+      {{{"rows", 2}, {"cols", 2}}, "round-refinement", checker::Verdict::violated},
+      {{{"rows", 2}, {"cols", 2}, {"owned_ends", 1}}, "round-refinement", checker::Verdict::holds}};
   return d;
 }
 
