@@ -84,7 +84,10 @@ ModelDefinition vn_layer_definition() {
                         "share (seed 002 §VI, line 232)"},
       {"round-refinement", "at every round start the counts per zone are the round-level "
                            "system's from the round start before (assign per zone; "
-                           "docs/design/vn-layer.md §5.3, check 5)"}};
+                           "docs/design/vn-layer.md §5.3, check 5)"},
+      {"cn-reports", "no active CN holds a round counter in a past round, so every active CN "
+                     "reports in every round (the premise of Theorem 1(2); cn_fail=keep "
+                     "breaks it)"}};
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     if (p.at("nbh") != 4 && p.at("nbh") != 8)
       return "nbh must be 4 or 8, not " + p.at("nbh").text();
@@ -124,6 +127,10 @@ ModelDefinition vn_layer_definition() {
                         "counts at each round start = the round-level system's from the one before",
                         [=, cn_faults = p.at("cn_faults") == 1](const checker::ExploreOptions& o) {
                           return vn_layer::check_round_refinement(c, system, o, cn_faults);
+                        }),
+        custom_property("cn-reports", "no active CN with a round counter in the past",
+                        [=](const checker::ExploreOptions& o) {
+                          return vn_layer::check_cn_reports(c, system, o);
                         })};
     for (checker::Property& property : m.properties)
       property = counting_fig7(std::move(property), c.branch_tally);
@@ -134,7 +141,8 @@ ModelDefinition vn_layer_definition() {
   // lets a cn-update come after the exchange-trigger (C14), and a VN that may fail with CNs
   // in its zone breaks (Y) (C10, finding V2). The layer follows the round-level system on
   // 2×1; on 1×2 (from the corner) and 2×2 (every placement, 1.5 s each) calctarget sends
-  // a CN onto the border the next zone owns (V4), which owned_ends=1 avoids.
+  // a CN onto the border the next zone owns (V4), which owned_ends=1 avoids. A CN that keeps
+  // its variables when it fails (seed 001, cn_fail=keep) can be silent for ever (V5).
   const auto corner = [](ParamValues p) {
     p.emplace("start", ParamValue::choice("corner"));
     return p;
@@ -152,7 +160,10 @@ ModelDefinition vn_layer_definition() {
       {corner({{"rows", 1}, {"cols", 2}, {"owned_ends", 1}}), "round-refinement",
        checker::Verdict::holds},
       {{{"rows", 2}, {"cols", 2}}, "round-refinement", checker::Verdict::violated},
-      {{{"rows", 2}, {"cols", 2}, {"owned_ends", 1}}, "round-refinement", checker::Verdict::holds}};
+      {{{"rows", 2}, {"cols", 2}, {"owned_ends", 1}}, "round-refinement", checker::Verdict::holds},
+      {{}, "cn-reports", checker::Verdict::holds},
+      {corner({{"cn_faults", 1}, {"cn_fail", ParamValue::choice("keep")}}), "cn-reports",
+       checker::Verdict::violated}};
   return d;
 }
 

@@ -17,7 +17,9 @@ Observers::Observers(const tioa::Automaton& layer, const VnConfig& c)
                     find_variable<bool>(layer, cn + "late_target_update"),
                     find_variable<int>(layer, cn + "phase"), find_variable<int>(layer, cn + "x"),
                     find_variable<int>(layer, cn + "target"),
-                    find_variable<int>(layer, cn + "round")});
+                    find_variable<int>(layer, cn + "round"),
+                    find_variable<int>(layer, cn + "next_exch"),
+                    find_variable<int>(layer, cn + "next_target")});
   }
   for (RegionId h = 0; h < lattice_.regions(); ++h) {
     const std::string vn = names::vn_name(h) + ".";
@@ -82,6 +84,21 @@ std::optional<std::string> Observers::y_failure(const tioa::State& s) const {
                    " computed the same round with y(" + std::to_string(a.zones[j]) +
                    ") = " + std::to_string(s[a.y[j]]) + " and " + std::to_string(s[b.y[k]]);
     }
+  return std::nullopt;
+}
+
+std::optional<std::string> Observers::silent_cn(const tioa::State& s) const {
+  for (std::size_t i = 0; i < cns_.size(); ++i) {
+    const CnSlots& cn = cns_[i];
+    if (s[cn.failed])
+      continue;
+    const std::pair<tioa::Variable<int>, const char*> counters[] = {
+        {cn.round, "round"}, {cn.next_exch, "next-exch"}, {cn.next_target, "next-target"}};
+    for (const auto& [counter, name] : counters)
+      if (!s.is_bottom(counter) && s[counter] == past_round)
+        return "(R) CN_" + std::to_string(i) + " is active with " + name +
+               " in a past round: it never sends again (001 Fig. 2 lines 34-50)";
+  }
   return std::nullopt;
 }
 

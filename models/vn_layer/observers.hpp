@@ -12,6 +12,10 @@
 //       CN stands on its target and the VN of its zone is alive (002:162);
 //  (Y)  for every two VNs f, g that computed targets in the same round, and every zone h of
 //       Nbrs_f ∪ {f} and of Nbrs_g ∪ {g}: y_f(h) = y_g(h) (002:232).
+//  (R)  no active CN holds round, next-exch or next-target in a past round: its sends wait
+//       for realtime = that round·δ (001 Fig. 2 lines 34–50), which never comes again, so
+//       it would never report (or trigger) again. A recovery that keeps the CN's
+//       variables (001:36, cn_fail=keep) after a round boundary leads there.
 
 #include <optional>
 #include <string>
@@ -30,13 +34,15 @@ public:
   std::optional<std::string> round_timing_failure(const tioa::State& s) const;
   // Two VNs that disagree on a count, in words; nullopt when (Y) holds in s.
   std::optional<std::string> y_failure(const tioa::State& s) const;
+  // An active CN that will never send again (R), in words; nullopt when there is none.
+  std::optional<std::string> silent_cn(const tioa::State& s) const;
   // A send found its place taken (vn.hpp, vlbcast.hpp): the model's bound.
   bool overflowed(const tioa::State& s) const;
 
 private:
   struct CnSlots {
     tioa::Variable<bool> failed, late;
-    tioa::Variable<int> phase, x, target, round;
+    tioa::Variable<int> phase, x, target, round, next_exch, next_target;
   };
   struct VnSlots {
     tioa::Variable<bool> failed, late_cn, late_vn, overflow;

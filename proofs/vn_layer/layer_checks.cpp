@@ -59,6 +59,18 @@ checker::PropertyResult check_y_consistency(const VnConfig& c, const tioa::Autom
                         "(seed 002 §VI, line 232)");
 }
 
+checker::PropertyResult check_cn_reports(const VnConfig& c, const tioa::Automaton& system,
+                                         const checker::ExploreOptions& options) {
+  checker::PropertyResult r = check_observed(
+      c, system, options, &Observers::silent_cn, "cn-reports",
+      "no active CN holds a round counter in a past round, so every active CN reports and "
+      "triggers in every round (the premise of Theorem 1(2), seed 001 / 002 §VI)");
+  if (c.cn_fail == CnFail::keep)
+    r.notes.push_back("cn_fail=keep: a failing CN keeps its variables (seed 001 line 36); "
+                      "seed 002 line 35 resets them, which the default cn_fail=reset follows");
+  return r;
+}
+
 void note_round_rules(const VnConfig& c, checker::PropertyResult& r) {
   const std::string paper = c.paper_round_bound_text();
   const int lattice = lattice_round_bound(c);

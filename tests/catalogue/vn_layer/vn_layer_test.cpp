@@ -1,7 +1,7 @@
 // The properties of `vn-layer` (models/vn_layer/README.md) on 2×1 with 2 CNs, δ = 13: the
 // paper's layer meets its timing claims and (Y) when δ meets the lattice's rule, and each
 // reading or shorter round that breaks one shows it with a trace that replays. Counts
-// pinned (no reduction: the model declares no footprints yet).
+// pinned (of the full graph: these runs do not ask for the zero-time reduction).
 #include <catch2/catch.hpp>
 
 #include "catalogue/registry.hpp"
@@ -110,6 +110,28 @@ TEST_CASE("vn-layer: a CN that fails and recovers can send twice in one instant,
       vt::run("y-consistency", {"start=corner", "rows=1", "cols=1", "cns=1", "cn_faults=1"}).result;
   CHECK(r.verdict == checker::Verdict::incomplete);
   CHECK_THAT(r.message, Catch::Contains("one message per kind and sender in VLBcast"));
+}
+
+TEST_CASE("vn-layer cn-reports: with cn_fail=keep a CN that fails before its cn-update and "
+          "recovers within the round is silent for ever (V5)",
+          "[vn-layer]") {
+  const auto holds = vt::run("cn-reports", {}).result;
+  CHECK(holds.verdict == checker::Verdict::holds);
+  CHECK(holds.states == 105'854);
+  const std::vector<std::string> one_cn = {"start=corner", "rows=1", "cols=1", "cns=1",
+                                           "cn_faults=1"};
+  std::vector<std::string> keep = one_cn;
+  keep.push_back("cn_fail=keep");
+  const vt::Run silent = vt::run("cn-reports", keep);
+  vt::check_counterexample(silent, "(R) CN_0 is active with round in a past round");
+  // init at time 0, fail before the cn-update, recover within round 0, the tick into round 1.
+  REQUIRE(silent.result.trace);
+  CHECK(silent.result.trace->steps.back().time == 13);
+  CHECK(vt::has_note(silent.result, "cn_fail=keep"));
+  // Resetting (seed 002 line 35) leaves no counter behind; the run meets the model's bound.
+  const auto reset = vt::run("cn-reports", one_cn).result;
+  CHECK(reset.verdict == checker::Verdict::incomplete);
+  CHECK_THAT(reset.message, Catch::Contains("one message per kind and sender in VLBcast"));
 }
 
 // The VNs compute targets with vlayer-mc's assign and calctarget (C18, C19), and every report
