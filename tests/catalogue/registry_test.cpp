@@ -68,7 +68,11 @@ TEST_CASE("registry: every model builds with its defaults and lists its properti
 }
 
 // [slow]: about 4 minutes under the sanitizers (tools/run-tests.sh skips it there).
-TEST_CASE("registry: every suite entry gives its expected verdict",
+// Every entry's verdict is checked by cli.suite (the whole suite through the CLI, on two
+// threads); here every entry builds and names a property, and every entry expected to be
+// violated is run to see its counterexample (running them all again took three minutes).
+TEST_CASE("registry: every suite entry builds, and each expected violation has its "
+          "counterexample",
           "[models][registry][suite][slow]") {
   for (const auto& def : catalogue::builtin_models().models()) {
     CHECK_FALSE(def.suite.empty());
@@ -85,6 +89,8 @@ TEST_CASE("registry: every suite entry gives its expected verdict",
         if (p.name == entry.property)
           property = &p;
       REQUIRE(property);
+      if (entry.expected != Verdict::violated)
+        continue;
       // As `suite` runs it: zero-time steps reduced where that is sound (--por on).
       checker::ExploreOptions options;
       options.por = true;
