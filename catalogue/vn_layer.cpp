@@ -6,6 +6,7 @@
 #include "models/vn_layer/layer.hpp"
 #include "proofs/vn_layer/layer_checks.hpp"
 #include "proofs/vn_layer/round_refinement.hpp"
+#include "proofs/vn_layer/stabilisation.hpp"
 #include "tioa/operators.hpp"
 
 namespace catalogue {
@@ -87,7 +88,12 @@ ModelDefinition vn_layer_definition() {
                            "docs/design/vn-layer.md §5.3, check 5)"},
       {"cn-reports", "no active CN holds a round counter in a past round, so every active CN "
                      "reports in every round (the premise of Theorem 1(2); cn_fail=keep "
-                     "breaks it)"}};
+                     "breaks it)"},
+      {"stabilisation", "Theorem 1 round by round: on every execution the assignment becomes "
+                        "fixed (T_stab), and every CN in a zone with q_h != 0 is on Gamma_h "
+                        "from round T_stab + 2 on (seed 002 §VI, line 302); worst T_out and "
+                        "T_stab beside the round-level system's (docs/design/vn-layer.md "
+                        "§5.3, check 6)"}};
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     if (p.at("nbh") != 4 && p.at("nbh") != 8)
       return "nbh must be 4 or 8, not " + p.at("nbh").text();
@@ -131,6 +137,11 @@ ModelDefinition vn_layer_definition() {
         custom_property("cn-reports", "no active CN with a round counter in the past",
                         [=](const checker::ExploreOptions& o) {
                           return vn_layer::check_cn_reports(c, system, o);
+                        }),
+        custom_property("stabilisation",
+                        "the assignment becomes fixed, and C_in is on Gamma by T_stab + 2",
+                        [=, cn_faults = p.at("cn_faults") == 1](const checker::ExploreOptions& o) {
+                          return vn_layer::check_stabilisation(c, system, o, cn_faults);
                         })};
     for (checker::Property& property : m.properties)
       property = counting_fig7(std::move(property), c.branch_tally);
@@ -143,6 +154,9 @@ ModelDefinition vn_layer_definition() {
   // 2×1; on 1×2 (from the corner) and 2×2 (every placement, 1.5 s each) calctarget sends
   // a CN onto the border the next zone owns (V4), which owned_ends=1 avoids. A CN that keeps
   // its variables when it fails (seed 001, cn_fail=keep) can be silent for ever (V5).
+  // Theorem 1 round by round: the assignment settles and C_in is on Γ by T_stab + 2, also
+  // across V4's migration on 1×2; a VN that may fail with a CN in its zone (vn_fail=any) can
+  // keep that CN off Γ for ever (V6).
   const auto corner = [](ParamValues p) {
     p.emplace("start", ParamValue::choice("corner"));
     return p;
@@ -163,6 +177,11 @@ ModelDefinition vn_layer_definition() {
       {{{"rows", 2}, {"cols", 2}, {"owned_ends", 1}}, "round-refinement", checker::Verdict::holds},
       {{}, "cn-reports", checker::Verdict::holds},
       {corner({{"cn_faults", 1}, {"cn_fail", ParamValue::choice("keep")}}), "cn-reports",
+       checker::Verdict::violated},
+      {{}, "stabilisation", checker::Verdict::holds},
+      {{{"rows", 1}, {"cols", 2}}, "stabilisation", checker::Verdict::holds},
+      {{{"cns", 1}, {"vn_fail", ParamValue::choice("any")}},
+       "stabilisation",
        checker::Verdict::violated}};
   return d;
 }

@@ -13,6 +13,13 @@ std::vector<mc::QuantisedLength> curve_q(const Lattice& lattice) {
   return q;
 }
 
+bool on_curve(const Lattice& lattice, RegionId u, Point p) {
+  if (u >= lattice.cols())
+    return false;
+  const int inf = u * lattice.b(), x = lattice.x_of(p);
+  return lattice.y_of(p) == lattice.b() / 2 && x >= inf && x <= inf + lattice.b();
+}
+
 std::vector<std::optional<Point>> compute_targets(const VlConfig& c, RegionId u,
                                                   const std::vector<std::optional<Point>>& reported,
                                                   const std::vector<int>& counts,

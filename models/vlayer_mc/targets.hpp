@@ -25,6 +25,8 @@ namespace vlayer_mc {
 
 // q_u in units of σ for every region (the curve above).
 std::vector<mc::QuantisedLength> curve_q(const Lattice& lattice);
+// p lies on the closure of Γ_u (false where Γ_u is empty).
+bool on_curve(const Lattice& lattice, RegionId u, Point p);
 
 // reported[p]: M_u(p) (nullopt: p ∉ dom M_u); counts[i]: V_u(nbrs(u)[i]).
 // Returns the target of every p ∈ dom M_u (nullopt for the others); `branches`, when given,

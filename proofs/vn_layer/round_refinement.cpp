@@ -1,6 +1,5 @@
 #include "proofs/vn_layer/round_refinement.hpp"
 
-#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -11,13 +10,11 @@
 #include "checker/trace.hpp"
 #include "models/mc/assign.hpp"
 #include "models/vlayer_mc/targets.hpp"
-#include "models/vn_layer/names.hpp"
 #include "proofs/vn_layer/layer_checks.hpp"
-#include "tioa/operators.hpp"
+#include "proofs/vn_layer/round_starts.hpp"
 
 namespace vn_layer {
 
-using checker::Edge;
 using checker::StateId;
 
 std::vector<int> counts_after_round(const VnConfig& c, const std::vector<int>& counts) {
@@ -53,34 +50,6 @@ std::string counts_text(const std::vector<int>& counts) {
     text += (u ? ", " : "") + std::to_string(counts[u]);
   return text + ")";
 }
-
-// The layer's variables the check reads: the round phase (CN_0's copy of realtime mod δ,
-// C21: with no CN failures every copy is the same) and each CN's failed flag and position.
-struct RoundView {
-  RoundView(const tioa::Automaton& system, const VnConfig& c)
-      : lattice(c.lattice()),
-        phase(tioa::find_variable<int>(system, names::cn_name(0) + ".phase")) {
-    for (int i = 0; i < c.cns; ++i) {
-      failed.push_back(tioa::find_variable<bool>(system, names::cn_name(i) + ".failed"));
-      x.push_back(tioa::find_variable<int>(system, names::cn_name(i) + ".x"));
-    }
-  }
-  // The active CNs per zone.
-  std::vector<int> counts(const tioa::Word* state) const {
-    const tioa::State s(state, 0);
-    std::vector<int> out(static_cast<std::size_t>(lattice.regions()), 0);
-    for (std::size_t i = 0; i < x.size(); ++i)
-      if (!s[failed[i]])
-        ++out[static_cast<std::size_t>(lattice.region_of(s[x[i]]))];
-    return out;
-  }
-  bool round_begins(const tioa::Word* state) const { return tioa::State(state, 0)[phase] == 0; }
-
-  Lattice lattice;
-  tioa::Variable<int> phase;
-  std::vector<tioa::Variable<bool>> failed;
-  std::vector<tioa::Variable<int>> x;
-};
 
 // A round start whose counts are not the round-level system's.
 struct Mismatch {
@@ -121,26 +90,16 @@ checker::PropertyResult check_round_refinement(const VnConfig& c, const tioa::Au
     return r;
   }
 
-  // The round starts: the start states (round 0, at time 0) and every state a tick enters
-  // at phase 0 (round k >= 1). From each, the states of its round are searched up to the
-  // round starts that end it.
+  // From each round start, the states of its round are searched up to the round starts
+  // that end it.
   const RoundView view(system, c);
+  RoundWalker rounds(ex, view);
   const std::uint64_t n = ex.store.size();
-  std::vector<std::uint8_t> later_start(n, 0); // entered by a tick at phase 0
-  for (StateId v = 0; v < n; ++v)
-    for (const std::uint32_t t : ex.steps_from(v))
-      if ((t & Edge::timed_bit) && view.round_begins(ex.store.state(t & ~Edge::timed_bit)))
-        later_start[t & ~Edge::timed_bit] = 1;
-
-  std::vector<StateId> seen_in(n, checker::no_parent); // the round start that searched it last
-  std::vector<StateId> came_from(n, checker::no_parent);
-  std::vector<StateId> queue;
   std::uint64_t round_starts = 0, pairs = 0;
   checker::PropertyLimitPoll poll(options.limits);
   std::optional<Mismatch> mismatch;
   for (StateId start = 0; start < n && !mismatch; ++start) {
-    const bool first_round = start < ex.start_states;
-    if (!first_round && !later_start[start])
+    if (!rounds.is_round_start(start))
       continue;
     if (poll.reached(round_starts)) {
       r.verdict = checker::Verdict::incomplete;
@@ -153,38 +112,20 @@ checker::PropertyResult check_round_refinement(const VnConfig& c, const tioa::Au
     // A start state and a later round start are told apart by how they were reached; one
     // state that is both is held to both.
     std::vector<std::vector<int>> allowed;
-    if (first_round)
+    if (start < ex.start_states)
       allowed.push_back(from);
-    if (later_start[start])
+    if (rounds.is_later_start(start))
       allowed.push_back(counts_after_round(c, from));
-    queue.assign(1, start);
-    seen_in[start] = start;
-    for (std::size_t next = 0; next < queue.size() && !mismatch; ++next) {
-      const StateId v = queue[next];
-      for (const std::uint32_t t : ex.steps_from(v)) {
-        const StateId to = t & ~Edge::timed_bit;
-        if ((t & Edge::timed_bit) && view.round_begins(ex.store.state(to))) {
-          ++pairs;
-          const std::vector<int> found = view.counts(ex.store.state(to));
-          for (const std::vector<int>& expected : allowed)
-            if (found != expected) {
-              mismatch = Mismatch{start, to, {}, found, expected, from};
-              for (StateId w = v; w != start; w = came_from[w])
-                mismatch->within.push_back(w);
-              std::reverse(mismatch->within.begin(), mismatch->within.end());
-              break;
-            }
-          if (mismatch)
-            break;
-          continue;
+    rounds.walk(start, [&](StateId v, StateId to) {
+      ++pairs;
+      const std::vector<int> found = view.counts(ex.store.state(to));
+      for (const std::vector<int>& expected : allowed)
+        if (found != expected) {
+          mismatch = Mismatch{start, to, rounds.path_within(start, v), found, expected, from};
+          return false;
         }
-        if (seen_in[to] == start)
-          continue;
-        seen_in[to] = start;
-        came_from[to] = v;
-        queue.push_back(to);
-      }
-    }
+      return true;
+    });
   }
   r.figures.emplace_back("round starts", std::to_string(round_starts));
   r.figures.emplace_back("rounds checked", std::to_string(pairs));

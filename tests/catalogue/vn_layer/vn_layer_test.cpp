@@ -230,3 +230,54 @@ TEST_CASE("vn-layer round-timing: the worst times against the stated ones", "[vn
   for (const auto& [key, value] : broken.figures)
     CHECK(key.find("measured") == std::string::npos);
 }
+
+// stabilisation (Theorem 1, 002:234 and 002:302) measured round by round. On 2×1 every
+// execution settles by round 2 as the round-level system does from the same counts, and a
+// CN of C_in may still be off Γ at T_stab + 1 (the VNs skip round 0, C12), never at
+// T_stab + 2. A VN that may fail with CNs in its zone (vn_fail=any, C10) can keep a CN off
+// Γ for ever: the claim of 002:302 fails, with a lasso.
+TEST_CASE("vn-layer stabilisation: the assignment settles and C_in is on the curve by "
+          "T_stab + 2, unless a VN may fail for ever",
+          "[vn-layer]") {
+  const auto figure = [](const checker::PropertyResult& r, const std::string& name) {
+    for (const auto& [key, value] : r.figures)
+      if (key == name)
+        return value;
+    return std::string("(none)");
+  };
+  {
+    const auto r = vt::run("stabilisation", {}).result;
+    CHECK(r.verdict == checker::Verdict::holds);
+    CHECK(r.states == 105'854);
+    CHECK(r.coverage.count == 225);
+    CHECK(figure(r, "round starts") == "1350");
+    CHECK(figure(r, "T_out (worst)") == "2");
+    CHECK(figure(r, "T_stab (worst)") == "2");
+    CHECK(figure(r, "starts where T_stab = the round-level system's") == "225 of 225");
+    CHECK(figure(r, "C_in on Gamma from, after T_stab (worst)") == "T_stab + 2");
+  }
+  // 1×2: the migration of V4 moves a CN across the border a round after the counts settle.
+  {
+    const auto r = vt::run("stabilisation", {"rows=1", "cols=2"}).result;
+    CHECK(r.verdict == checker::Verdict::holds);
+    CHECK(figure(r, "T_stab (worst)") == "3");
+    CHECK(figure(r, "starts where T_stab = the round-level system's") == "189 of 225");
+    CHECK(vt::has_note(r, "on 36 start states the worst T_stab differs"));
+  }
+  const vt::Run failing = vt::run("stabilisation", {"vn_fail=any", "cns=1"});
+  const checker::PropertyResult& r = failing.result;
+  CHECK(r.verdict == checker::Verdict::violated);
+  CHECK_THAT(r.message, Catch::Contains("with a CN of C_in off Gamma at the start of round 2 (2 "
+                                        "rounds after T_stab"));
+  CHECK(figure(r, "C_in on Gamma from round (worst)") == "unbounded");
+  REQUIRE(r.trace);
+  CHECK(r.trace_kind == "lasso");
+  CHECK(r.trace->loop_start);
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(failing.system), *r.trace, &why));
+  INFO(why);
+
+  const auto faults = vt::run("stabilisation", {"start=corner", "cn_faults=1"}).result;
+  CHECK(faults.verdict == checker::Verdict::incomplete);
+  CHECK_THAT(faults.message, Catch::Contains("not checked: Theorem 1 assumes"));
+}

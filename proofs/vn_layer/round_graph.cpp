@@ -1,0 +1,101 @@
+#include "proofs/vn_layer/round_graph.hpp"
+
+#include <algorithm>
+
+namespace vn_layer {
+
+Components components_of(const RoundGraph& g) {
+  const Node n = g.size();
+  Components c;
+  c.of.assign(n, no_node);
+  std::vector<std::uint32_t> index(n, no_node), low(n, 0);
+  std::vector<std::uint8_t> on_stack(n, 0);
+  std::vector<Node> stack;
+  std::vector<std::pair<Node, std::uint32_t>> calls; // (node, next arc)
+  std::uint32_t counter = 0;
+  for (Node root = 0; root < n; ++root) {
+    if (index[root] != no_node)
+      continue;
+    calls.emplace_back(root, g.first[root]);
+    index[root] = low[root] = counter++;
+    stack.push_back(root);
+    on_stack[root] = 1;
+    while (!calls.empty()) {
+      auto& [v, arc] = calls.back();
+      if (arc < g.first[v + 1]) {
+        const Node w = g.next[arc++];
+        if (index[w] == no_node) {
+          index[w] = low[w] = counter++;
+          stack.push_back(w);
+          on_stack[w] = 1;
+          calls.emplace_back(w, g.first[w]);
+        } else if (on_stack[w]) {
+          low[v] = std::min(low[v], index[w]);
+        }
+        continue;
+      }
+      const Node done = v;
+      calls.pop_back();
+      if (!calls.empty())
+        low[calls.back().first] = std::min(low[calls.back().first], low[done]);
+      if (low[done] != index[done])
+        continue;
+      const std::uint32_t id = c.count();
+      bool cyclic = stack.back() != done;
+      Node w;
+      do {
+        w = stack.back();
+        stack.pop_back();
+        on_stack[w] = 0;
+        c.of[w] = id;
+      } while (w != done);
+      g.for_arcs(done, [&](Node t) { cyclic = cyclic || t == done; });
+      c.cyclic.push_back(cyclic ? 1 : 0);
+    }
+  }
+  return c;
+}
+
+Settling settling_of(const RoundGraph& g, const Components& c,
+                     const std::function<bool(Node)>& at_node,
+                     const std::function<bool(Node, Node)>& on_arc) {
+  Settling s;
+  s.worst.assign(g.size(), 0);
+  std::vector<std::vector<Node>> members(c.count());
+  for (Node v = 0; v < g.size(); ++v)
+    members[c.of[v]].push_back(v);
+  for (std::uint32_t id = 0; id < c.count(); ++id) { // successors' components first
+    std::uint32_t worst = 0;
+    bool event_inside = false;
+    for (const Node v : members[id]) {
+      if (at_node(v)) {
+        worst = std::max<std::uint32_t>(worst, 1);
+        if (c.cyclic[id] && !s.endless)
+          s.endless = std::make_pair(v, v);
+      }
+      g.for_arcs(v, [&](Node w) {
+        const bool event = on_arc(v, w);
+        if (c.of[w] == id) {
+          event_inside = event_inside || event;
+          if (event && !s.endless)
+            s.endless = std::make_pair(v, w);
+        } else if (s.worst[w] == unbounded) {
+          worst = unbounded;
+        } else if (worst != unbounded && (event || s.worst[w] > 0)) {
+          worst = std::max(worst, 1 + s.worst[w]);
+        }
+        if (event && worst != unbounded)
+          worst = std::max<std::uint32_t>(worst, 1);
+      });
+    }
+    // Within a cycle an execution may stay any number of rounds before an event it can
+    // still reach.
+    if (c.cyclic[id] && (worst > 0 || event_inside))
+      worst = unbounded;
+    for (const Node v : members[id])
+      s.worst[v] = worst;
+  }
+  return s;
+}
+
+} // namespace vn_layer

@@ -1,0 +1,61 @@
+#pragma once
+// The rounds of the conference layer as a graph (docs/design/vn-layer.md §5.3, check 6): a
+// node per round start (round_starts.hpp), an arc to every round start its round leads to,
+// and what is measured on it: when along every path of rounds something stops happening.
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "checker/explorer.hpp"
+
+namespace vn_layer {
+
+using Node = std::uint32_t;
+inline constexpr Node no_node = std::numeric_limits<Node>::max();
+inline constexpr std::uint32_t unbounded = std::numeric_limits<std::uint32_t>::max();
+
+// Nodes are numbered in the order of their states, so the start states come first.
+struct RoundGraph {
+  std::vector<checker::StateId> state;
+  std::vector<std::uint32_t> first{0}; // the arcs of v: next[first[v] .. first[v + 1])
+  std::vector<Node> next;
+  Node starts = 0;
+
+  Node size() const { return static_cast<Node>(first.size() - 1); }
+  template <class F> void for_arcs(Node v, F f) const {
+    for (std::uint32_t a = first[v]; a < first[v + 1]; ++a)
+      f(next[a]);
+  }
+};
+
+// Tarjan's algorithm on the round graph: the component of every node, numbered in the order
+// they are completed (every component reachable from another is completed before it), and
+// whether each holds a cycle (two nodes or more, or an arc to itself).
+struct Components {
+  std::vector<std::uint32_t> of;
+  std::vector<std::uint8_t> cyclic;
+  std::uint32_t count() const { return static_cast<std::uint32_t>(cyclic.size()); }
+};
+
+Components components_of(const RoundGraph& g);
+
+// Over the executions from each node, the worst round by which something has stopped
+// happening: 1 + the index of the last event on the way (0 when none happens; unbounded
+// when a cycle can come before an event). An event is at a node (`at_node`) or on an arc
+// (`on_arc`: the CNs' zones differ at its two ends, say); an arc's index is its source's.
+struct Settling {
+  std::vector<std::uint32_t> worst; // per node
+  // An arc (from, to) inside a cycle with an event on it (from == to: a node event): an
+  // execution may go round it for ever, and the event never stops.
+  std::optional<std::pair<Node, Node>> endless;
+};
+
+Settling settling_of(const RoundGraph& g, const Components& c,
+                     const std::function<bool(Node)>& at_node,
+                     const std::function<bool(Node, Node)>& on_arc);
+
+} // namespace vn_layer

@@ -1,0 +1,415 @@
+#include "proofs/vn_layer/stabilisation.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "checker/explorer.hpp"
+#include "checker/run_limits.hpp"
+#include "checker/trace.hpp"
+#include "models/vlayer_mc/targets.hpp"
+#include "proofs/vn_layer/layer_checks.hpp"
+#include "proofs/vn_layer/round_graph.hpp"
+#include "proofs/vn_layer/round_refinement.hpp"
+#include "proofs/vn_layer/round_starts.hpp"
+
+namespace vn_layer {
+
+using checker::StateId;
+
+namespace {
+
+// What a round start says of the CNs: the zone of each (the assignment the round before
+// made; −1 for a failed CN), the same restricted to zones with q_h = 0 (−2 elsewhere), and
+// whether every active CN in a zone with q_h ≠ 0 stands on Γ_h.
+struct RoundFacts {
+  std::vector<std::vector<int>> zones, out_zones;
+  std::vector<std::uint8_t> on_curve;
+};
+
+RoundFacts facts_of(const RoundGraph& g, const checker::Exploration& ex, const RoundView& view) {
+  const auto q = vlayer_mc::curve_q(view.lattice);
+  RoundFacts f;
+  for (Node v = 0; v < g.size(); ++v) {
+    const tioa::Word* state = ex.store.state(g.state[v]);
+    const tioa::State s(state, 0);
+    std::vector<int> zones = view.zones(state), out = zones;
+    bool on = true;
+    for (std::size_t i = 0; i < zones.size(); ++i) {
+      if (zones[i] < 0)
+        continue;
+      if (q[static_cast<std::size_t>(zones[i])] != 0) {
+        out[i] = -2;
+        on = on && vlayer_mc::on_curve(view.lattice, zones[i], s[view.x[i]]);
+      }
+    }
+    f.zones.push_back(std::move(zones));
+    f.out_zones.push_back(std::move(out));
+    f.on_curve.push_back(on ? 1 : 0);
+  }
+  return f;
+}
+
+std::string rounds_text(std::uint32_t rounds) {
+  return rounds == unbounded ? "unbounded" : std::to_string(rounds);
+}
+
+// A shortest path of rounds from a start state to `to` (nodes, the start state first).
+std::vector<Node> path_from_start(const RoundGraph& g, Node to) {
+  std::vector<Node> parent(g.size(), no_node), queue;
+  for (Node v = 0; v < g.starts; ++v) {
+    parent[v] = v;
+    queue.push_back(v);
+  }
+  for (std::size_t i = 0; i < queue.size(); ++i)
+    g.for_arcs(queue[i], [&](Node w) {
+      if (parent[w] == no_node) {
+        parent[w] = queue[i];
+        queue.push_back(w);
+      }
+    });
+  std::vector<Node> path{to};
+  while (parent[path.back()] != path.back())
+    path.push_back(parent[path.back()]);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+// A shortest path of rounds from `from` to `to` along arcs `keep` admits (from excluded).
+std::vector<Node> path_between(const RoundGraph& g, Node from, Node to,
+                               const std::function<bool(Node, Node)>& keep) {
+  std::vector<Node> parent(g.size(), no_node), queue{from};
+  parent[from] = from;
+  for (std::size_t i = 0; i < queue.size() && parent[to] == no_node; ++i)
+    g.for_arcs(queue[i], [&](Node w) {
+      if (parent[w] == no_node && keep(queue[i], w)) {
+        parent[w] = queue[i];
+        queue.push_back(w);
+      }
+    });
+  if (parent[to] == no_node)
+    throw std::logic_error("stabilisation: no path of rounds where one was found before");
+  std::vector<Node> path;
+  for (Node v = to; v != from; v = parent[v])
+    path.push_back(v);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+// The trace of a path of rounds (its first node a start state), each round's steps found
+// again by searching it; `loop_node`: the index in `rounds` where a lasso's cycle begins
+// (the last node equals it).
+checker::Trace trace_of_rounds(const tioa::SuccessorGenerator& gen, const checker::Exploration& ex,
+                               RoundWalker& walker, const RoundGraph& g,
+                               const std::vector<Node>& rounds,
+                               std::optional<std::size_t> loop_node) {
+  checker::Trace trace = checker::trace_to(gen, ex, g.state[rounds.front()]);
+  bool extended = true;
+  for (std::size_t i = 0; i + 1 < rounds.size(); ++i) {
+    if (loop_node && *loop_node == i)
+      trace.loop_start = trace.steps.size() - 1;
+    const StateId from = g.state[rounds[i]], to = g.state[rounds[i + 1]];
+    StateId last = checker::no_parent;
+    walker.walk(from, [&](StateId v, StateId end) {
+      if (end != to)
+        return true;
+      last = v;
+      return false;
+    });
+    if (last == checker::no_parent)
+      throw std::logic_error("stabilisation: a round of the graph was not found again");
+    for (const StateId w : walker.path_within(from, last))
+      extended = extended && checker::extend(gen, trace, ex.store.state(w));
+    extended = extended && checker::extend(gen, trace, ex.store.state(to), 1u);
+  }
+  if (!extended)
+    throw std::logic_error("stabilisation: an edge of the graph is no step of the model");
+  return trace;
+}
+
+// Follows arcs `keep` admits from `from` through nodes `stay` holds until a node repeats: the
+// nodes after `from` and the index among them where the cycle begins.
+std::pair<std::vector<Node>, std::size_t> cycle_from(const RoundGraph& g, Node from,
+                                                     const std::vector<std::uint8_t>& stay,
+                                                     const std::function<bool(Node, Node)>& keep) {
+  std::vector<std::size_t> seen_at(g.size(), no_node);
+  std::vector<Node> path;
+  Node v = from;
+  seen_at[from] = 0;
+  for (;;) {
+    Node step = no_node;
+    g.for_arcs(v, [&](Node w) {
+      if (step == no_node && stay[w] && keep(v, w))
+        step = w;
+    });
+    if (step == no_node)
+      throw std::logic_error("stabilisation: a round start that can stay fixed has no next round");
+    path.push_back(step);
+    if (seen_at[step] != no_node)
+      return {path, seen_at[step]};
+    seen_at[step] = path.size();
+    v = step;
+  }
+}
+
+} // namespace
+
+checker::PropertyResult check_stabilisation(const VnConfig& c, const tioa::Automaton& system,
+                                            const checker::ExploreOptions& options,
+                                            bool cn_faults) {
+  checker::PropertyResult r;
+  r.name = "stabilisation";
+  if (cn_faults) {
+    r.kind = "stabilisation";
+    r.verdict = checker::Verdict::incomplete;
+    r.message = "not checked: Theorem 1 assumes no CN failure or recovery after round t_0, and "
+                "with cn_faults=1 they may happen in any round";
+    return r;
+  }
+  checker::require_exact_store(options, "stabilisation");
+  const tioa::SuccessorGenerator gen(system);
+  checker::ExploreHooks hooks;
+  hooks.record_edges = true;
+  const checker::Exploration ex = checker::explore(gen, system.start(), options, hooks);
+  r = checker::result_of("stabilisation", ex, gen);
+  r.name = "stabilisation";
+  r.notes.push_back(
+      "rounds are numbered as the CNs number them, from 0 at the start state; the VNs skip "
+      "round 0 (C12), so a round-level round t is the layer's round t + 1");
+  r.notes.push_back(
+      "T_stab of an execution: the first round from which every CN stays in its zone at every "
+      "round start (the set assigned to each VN no longer changes, 002:286); T_out the same for "
+      "the CNs in zones with q_h = 0 (002:264); the theorem gives neither a bound (002:234)");
+  r.notes.push_back(
+      "C_in at round T_stab + 2 and later: every active CN in a zone with q_h != 0 (each such "
+      "zone has held the same CNs for two rounds, so its VN is active, 002:230); on Gamma: on "
+      "the closure of Gamma_h of its own zone h");
+  note_round_rules(c, r);
+  if (!ex.complete()) {
+    checker::mark_incomplete(r, ex, "no execution found that breaks Theorem 1 so far");
+    return r;
+  }
+
+  const RoundView view(system, c);
+  RoundWalker walker(ex, view);
+  RoundGraph g;
+  std::vector<Node> node_of(ex.store.size(), no_node);
+  for (StateId v = 0; v < ex.store.size(); ++v)
+    if (walker.is_round_start(v)) {
+      node_of[v] = static_cast<Node>(g.state.size());
+      g.state.push_back(v);
+    }
+  g.starts = static_cast<Node>(std::count_if(g.state.begin(), g.state.end(),
+                                             [&](StateId v) { return v < ex.start_states; }));
+  checker::PropertyLimitPoll poll(options.limits);
+  std::uint64_t dead_ends = 0;
+  const auto nodes = static_cast<Node>(g.state.size());
+  for (Node v = 0; v < nodes; ++v) {
+    if (poll.reached(v)) {
+      r.verdict = checker::Verdict::incomplete;
+      r.message = "stopped on a limit after the rounds of " + std::to_string(v) + " of " +
+                  std::to_string(nodes) + " round starts";
+      return r;
+    }
+    const std::size_t begin = g.next.size();
+    walker.walk(g.state[v], [&](StateId, StateId to) {
+      g.next.push_back(node_of[to]);
+      return true;
+    });
+    std::sort(g.next.begin() + static_cast<std::ptrdiff_t>(begin), g.next.end());
+    g.next.erase(std::unique(g.next.begin() + static_cast<std::ptrdiff_t>(begin), g.next.end()),
+                 g.next.end());
+    if (g.next.size() == begin)
+      ++dead_ends;
+    g.first.push_back(static_cast<std::uint32_t>(g.next.size()));
+  }
+  r.figures.emplace_back("round starts", std::to_string(g.size()));
+  r.figures.emplace_back("rounds", std::to_string(g.next.size()));
+  if (dead_ends) {
+    r.verdict = checker::Verdict::incomplete;
+    r.message = std::to_string(dead_ends) +
+                " round starts have no next round (a time-lock: see no-timelock); the "
+                "executions through them have no T_stab to measure";
+    return r;
+  }
+
+  const RoundFacts facts = facts_of(g, ex, view);
+  const Components comps = components_of(g);
+  const auto moves = [&](Node v, Node w) { return facts.zones[v] != facts.zones[w]; };
+  const auto out_moves = [&](Node v, Node w) { return facts.out_zones[v] != facts.out_zones[w]; };
+  const auto no_node_event = [](Node) { return false; };
+  const Settling stab = settling_of(g, comps, no_node_event, moves);
+  const Settling out = settling_of(g, comps, no_node_event, out_moves);
+  const Settling curve = settling_of(
+      g, comps, [&](Node v) { return facts.on_curve[v] == 0; }, [](Node, Node) { return false; });
+  const auto worst_over_starts = [&](const Settling& s) {
+    std::uint32_t worst = 0;
+    for (Node v = 0; v < g.starts; ++v)
+      worst = std::max(worst, s.worst[v]);
+    return worst;
+  };
+  r.figures.emplace_back("T_out (worst)", rounds_text(worst_over_starts(out)));
+  r.figures.emplace_back("T_stab (worst)", rounds_text(worst_over_starts(stab)));
+  r.figures.emplace_back("C_in on Gamma from round (worst)", rounds_text(worst_over_starts(curve)));
+
+  // The round-level system from each start's counts (counts_after_round; the layer's
+  // rounds 0 and 1 hold the start counts, C12): its T_stab in the layer's numbering, beside
+  // the worst the layer shows from that start. The paper claims no equality; a difference
+  // is a CN that changes zone where no count does (a swap) or the migration of V4.
+  std::uint64_t equal = 0;
+  std::int64_t widest = 0;
+  for (Node v = 0; v < g.starts; ++v) {
+    // R_0 = the start counts, R_{j+1} the round-level system's from R_j, up to a repeat.
+    std::vector<std::vector<int>> counts{view.counts(ex.store.state(g.state[v]))};
+    std::uint32_t level = unbounded;
+    for (;;) {
+      std::vector<int> after = counts_after_round(c, counts.back());
+      const auto seen = std::find(counts.begin(), counts.end(), after);
+      if (seen == counts.end() - 1) { // a fixed point from R_j on: the layer's round j + 1
+        const auto j = static_cast<std::uint32_t>(counts.size() - 1);
+        level = j == 0 ? 0 : j + 1;
+      }
+      if (seen != counts.end())
+        break; // the fixed point, or a cycle of counts (unbounded)
+      counts.push_back(std::move(after));
+    }
+    if (level == stab.worst[v])
+      ++equal;
+    else if (level != unbounded && stab.worst[v] != unbounded)
+      widest = std::max<std::int64_t>(widest, std::abs(static_cast<std::int64_t>(level) -
+                                                       static_cast<std::int64_t>(stab.worst[v])));
+  }
+  r.figures.emplace_back("starts where T_stab = the round-level system's",
+                         std::to_string(equal) + " of " + std::to_string(g.starts));
+  if (equal < g.starts)
+    r.notes.push_back("on " + std::to_string(g.starts - equal) +
+                      " start states the worst T_stab differs from the round-level system's "
+                      "(counts, the same start counts; by up to " +
+                      std::to_string(widest) +
+                      " rounds where both are finite): see round-refinement");
+
+  // (1) The assignment becomes fixed on every execution.
+  if (stab.endless) {
+    const auto [from, to] = *stab.endless;
+    std::vector<Node> rounds = path_from_start(g, from);
+    const std::size_t loop = rounds.size() - 1;
+    const auto inside = [&](Node a, Node b) { return comps.of[a] == comps.of[b]; };
+    rounds.push_back(to);
+    if (to != from)
+      for (const Node w : path_between(g, to, from, inside))
+        rounds.push_back(w);
+    r.verdict = checker::Verdict::violated;
+    r.trace = trace_of_rounds(gen, ex, walker, g, rounds, loop);
+    r.trace_role = "counterexample";
+    r.trace_kind = "lasso";
+    r.message = "an execution on which CNs change zones in every cycle of " +
+                std::to_string(rounds.size() - 1 - loop) +
+                " rounds for ever: the assignment never becomes fixed (Theorem 1(1), "
+                "002:234; trace: " +
+                std::to_string(r.trace->length()) + " steps)";
+    return r;
+  }
+
+  // (2) From round T_stab + 2 on, C_in on Γ (002:302). Rounds since the last change of
+  // zones, up to 3 ("3 or more"), along every path; a node where the assignment may stay
+  // fixed for ever (an endless path of rounds without a change) and a CN is off Γ at 2 or
+  // more breaks the claim.
+  const Node n = g.size();
+  std::vector<std::uint8_t> can_stay(n, 1); // an endless path without a change from here
+  {
+    std::vector<std::uint32_t> stays(n, 0);
+    std::vector<std::vector<Node>> back(n);
+    std::vector<Node> queue;
+    for (Node v = 0; v < n; ++v)
+      g.for_arcs(v, [&](Node w) {
+        if (!moves(v, w)) {
+          ++stays[v];
+          back[w].push_back(v);
+        }
+      });
+    for (Node v = 0; v < n; ++v)
+      if (stays[v] == 0) {
+        can_stay[v] = 0;
+        queue.push_back(v);
+      }
+    for (std::size_t i = 0; i < queue.size(); ++i)
+      for (const Node u : back[queue[i]])
+        if (can_stay[u] && --stays[u] == 0) {
+          can_stay[u] = 0;
+          queue.push_back(u);
+        }
+  }
+  constexpr std::uint32_t levels = 4; // rounds since the last change: 0, 1, 2, 3 or more
+  std::vector<std::uint32_t> parent(std::size_t{n} * levels, no_node);
+  std::vector<std::uint32_t> queue;
+  for (Node v = 0; v < g.starts; ++v) {
+    parent[v * levels] = v * levels;
+    queue.push_back(v * levels);
+  }
+  int latest_off = -1; // the largest level where a CN of C_in is off Γ and zones can stay
+  std::uint32_t off_at = no_node; // the first (so nearest) at level 2 or more
+  for (std::size_t i = 0; i < queue.size(); ++i) {
+    const Node v = queue[i] / levels;
+    const std::uint32_t level = queue[i] % levels;
+    if (!facts.on_curve[v] && can_stay[v]) {
+      latest_off = std::max(latest_off, static_cast<int>(level));
+      if (level >= 2 && off_at == no_node)
+        off_at = queue[i];
+    }
+    g.for_arcs(v, [&](Node w) {
+      const std::uint32_t to = w * levels + (moves(v, w) ? 0 : std::min(level + 1, levels - 1));
+      if (parent[to] == no_node) {
+        parent[to] = queue[i];
+        queue.push_back(to);
+      }
+    });
+  }
+  r.figures.emplace_back("C_in on Gamma from, after T_stab (worst)",
+                         latest_off < 0 ? "T_stab"
+                         : latest_off + 1 < static_cast<int>(levels)
+                             ? "T_stab + " + std::to_string(latest_off + 1)
+                             : "T_stab + 4 or later");
+  if (off_at != no_node) {
+    const std::uint32_t off_level = off_at % levels;
+    std::vector<Node> rounds;
+    for (std::uint32_t p = off_at;; p = parent[p]) {
+      rounds.push_back(p / levels);
+      if (parent[p] == p)
+        break;
+    }
+    std::reverse(rounds.begin(), rounds.end());
+    const std::size_t off_round = rounds.size() - 1;
+    const auto [after, loop] =
+        cycle_from(g, rounds.back(), can_stay, [&](Node a, Node b) { return !moves(a, b); });
+    rounds.insert(rounds.end(), after.begin(), after.end());
+    r.verdict = checker::Verdict::violated;
+    r.trace = trace_of_rounds(gen, ex, walker, g, rounds, off_round + loop);
+    r.trace_role = "counterexample";
+    r.trace_kind = "lasso";
+    r.message = "an execution whose CNs stay in their zones from round " +
+                std::to_string(off_round - std::min<std::size_t>(off_round, off_level)) +
+                " on, with a CN of C_in off Gamma at the start of round " +
+                std::to_string(off_round) + " (" + std::to_string(off_level) +
+                (off_level == levels - 1 ? " or more" : "") +
+                " rounds after T_stab; 002:302 has them on Gamma by T_stab + 2; trace: " +
+                std::to_string(r.trace->length()) + " steps)";
+    return r;
+  }
+  checker::mark_holds(r, ex,
+                      "on every execution from every start state the assignment becomes fixed "
+                      "(worst T_stab " +
+                          rounds_text(worst_over_starts(stab)) +
+                          ") and every CN of C_in stands on Gamma from round T_stab + 2 on (" +
+                          std::to_string(g.size()) + " round starts, " +
+                          std::to_string(g.next.size()) + " rounds), on all " +
+                          checker::reachable_states(ex.store.size(), ex));
+  return r;
+}
+
+} // namespace vn_layer
