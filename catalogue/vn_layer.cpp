@@ -86,6 +86,10 @@ ModelDefinition vn_layer_definition() {
       {"round-refinement", "at every round start the counts per zone are the round-level "
                            "system's from the round start before (assign per zone; "
                            "docs/design/vn-layer.md §5.3, check 5)"},
+      {"position-refinement", "at every round start each CN stands where the position-level "
+                              "round system puts it from the round start before (assign and "
+                              "calctarget per zone on the CNs' points; it follows V4's "
+                              "migration, which round-refinement stops at)"},
       {"cn-reports", "no active CN holds a round counter in a past round, so every active CN "
                      "reports in every round (the premise of Theorem 1(2); cn_fail=keep "
                      "breaks it)"},
@@ -134,6 +138,12 @@ ModelDefinition vn_layer_definition() {
                         [=, cn_faults = p.at("cn_faults") == 1](const checker::ExploreOptions& o) {
                           return vn_layer::check_round_refinement(c, system, o, cn_faults);
                         }),
+        custom_property("position-refinement",
+                        "points at each round start = the position-level system's from the one "
+                        "before",
+                        [=, cn_faults = p.at("cn_faults") == 1](const checker::ExploreOptions& o) {
+                          return vn_layer::check_position_refinement(c, system, o, cn_faults);
+                        }),
         custom_property("cn-reports", "no active CN with a round counter in the past",
                         [=](const checker::ExploreOptions& o) {
                           return vn_layer::check_cn_reports(c, system, o);
@@ -153,7 +163,9 @@ ModelDefinition vn_layer_definition() {
   // in its zone breaks (Y) (C10, finding V2). The layer follows the round-level system on
   // 2×1; on 1×2 (from the corner) and 2×2 (every placement, 1.5 s each) calctarget sends
   // a CN onto the border the next zone owns (V4), which owned_ends=1 avoids. A CN that keeps
-  // its variables when it fails (seed 001, cn_fail=keep) can be silent for ever (V5).
+  // its variables when it fails (seed 001, cn_fail=keep) can be silent for ever (V5). At
+  // position level the layer follows the round system across borders too, and δ = 12
+  // drops a move (V1).
   // Theorem 1 round by round: the assignment settles and C_in is on Γ by T_stab + 2, also
   // across V4's migration on 1×2; a VN that may fail with a CN in its zone (vn_fail=any) can
   // keep that CN off Γ for ever (V6).
@@ -178,6 +190,9 @@ ModelDefinition vn_layer_definition() {
       {{}, "cn-reports", checker::Verdict::holds},
       {corner({{"cn_faults", 1}, {"cn_fail", ParamValue::choice("keep")}}), "cn-reports",
        checker::Verdict::violated},
+      {{}, "position-refinement", checker::Verdict::holds},
+      {{{"rows", 2}, {"cols", 2}}, "position-refinement", checker::Verdict::holds},
+      {corner({{"delta", 12}}), "position-refinement", checker::Verdict::violated},
       {{}, "stabilisation", checker::Verdict::holds},
       {{{"rows", 1}, {"cols", 2}}, "stabilisation", checker::Verdict::holds},
       {{{"cns", 1}, {"vn_fail", ParamValue::choice("any")}},

@@ -24,6 +24,11 @@ namespace vn_layer {
 // (default order) on `counts`, indexed by region.
 std::vector<int> counts_after_round(const VnConfig& config, const std::vector<int>& counts);
 
+// The CNs' points one round later at position level (the reference of position-refinement):
+// each zone's VN runs assign and calctarget (vlayer_mc::compute_targets) on the points of
+// the CNs in its zone and its neighbours' counts; `positions` per CN, −1 for a failed one.
+std::vector<int> positions_after_round(const VnConfig& config, const std::vector<int>& positions);
+
 // Every round start reached against the round before; violated with a trace from a start
 // state through the round start before to the first round start whose counts differ.
 // `cn_faults`: CNs fail and recover (then the counts of active CNs follow no round-level
@@ -32,5 +37,13 @@ checker::PropertyResult check_round_refinement(const VnConfig& config,
                                                const tioa::Automaton& system,
                                                const checker::ExploreOptions& options,
                                                bool cn_faults);
+
+// position-refinement: the same with the CNs' points against positions_after_round. Where
+// calctarget sends a CN onto a border the next zone owns (V4), the counts leave the
+// count-level system but the points follow this one.
+checker::PropertyResult check_position_refinement(const VnConfig& config,
+                                                  const tioa::Automaton& system,
+                                                  const checker::ExploreOptions& options,
+                                                  bool cn_faults);
 
 } // namespace vn_layer

@@ -27,11 +27,19 @@ std::vector<int> RoundView::counts(const tioa::Word* state) const {
 }
 
 std::vector<int> RoundView::zones(const tioa::Word* state) const {
+  std::vector<int> out = points(state);
+  for (int& p : out)
+    if (p >= 0)
+      p = lattice.region_of(p);
+  return out;
+}
+
+std::vector<int> RoundView::points(const tioa::Word* state) const {
   const tioa::State s(state, 0);
   std::vector<int> out(x.size(), -1);
   for (std::size_t i = 0; i < x.size(); ++i)
     if (!s[failed[i]])
-      out[i] = lattice.region_of(s[x[i]]);
+      out[i] = s[x[i]];
   return out;
 }
 

@@ -24,6 +24,8 @@ struct RoundView {
   std::vector<int> counts(const tioa::Word* state) const;
   // Each CN's zone, or −1 for a failed CN.
   std::vector<int> zones(const tioa::Word* state) const;
+  // Each CN's point, or −1 for a failed CN.
+  std::vector<int> points(const tioa::Word* state) const;
   bool round_begins(const tioa::Word* state) const;
 
   Lattice lattice;

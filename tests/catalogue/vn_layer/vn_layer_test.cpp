@@ -163,6 +163,53 @@ TEST_CASE("vn-layer: the round-level counts one round later", "[vn-layer]") {
   CHECK(vn_layer::counts_after_round(c, {2}) == std::vector<int>{2});
 }
 
+// position-refinement's reference: assign and calctarget per zone on the points of a round
+// start. On 2×1 from the corner (0, 4), one of the two CNs in zone 1 goes to o_0 = (1, 1)
+// (line 31, the lowest id) and the other stays (Γ_1 is empty). On 1×2 two CNs off the curve
+// go to its nearest point (line 33); two on it at (0, 1) go to the ends of Γ_0 (lines
+// 35–36), the second to (2, 1), which zone 1 owns (V4).
+TEST_CASE("vn-layer: the CNs' points one round later", "[vn-layer]") {
+  vn_layer::VnConfig c;
+  const vn_layer::Lattice tall = c.lattice();
+  CHECK(vn_layer::positions_after_round(c, {tall.point(0, 4), tall.point(0, 4)}) ==
+        std::vector<int>{tall.point(1, 1), tall.point(0, 4)});
+  c.rows = 1;
+  c.cols = 2;
+  const vn_layer::Lattice wide = c.lattice();
+  CHECK(vn_layer::positions_after_round(c, {wide.point(0, 2), wide.point(0, 2)}) ==
+        std::vector<int>{wide.point(0, 1), wide.point(0, 1)});
+  CHECK(vn_layer::positions_after_round(c, {wide.point(0, 1), wide.point(0, 1)}) ==
+        std::vector<int>{wide.point(0, 1), wide.point(2, 1)});
+  c.owned_ends = true; // the end zone 0 owns: (1, 1)
+  CHECK(vn_layer::positions_after_round(c, {wide.point(0, 1), wide.point(0, 1)}) ==
+        std::vector<int>{wide.point(0, 1), wide.point(1, 1)});
+  // A failed CN is nobody's.
+  CHECK(vn_layer::positions_after_round(c, {-1, wide.point(0, 2)}) ==
+        std::vector<int>{-1, wide.point(0, 1)});
+}
+
+// position-refinement follows V4's migration, and sees the move a late VN restart drops.
+TEST_CASE("vn-layer position-refinement: the layer follows the position-level round system "
+          "across borders, and a VN restarted after the cn-update drops a move",
+          "[vn-layer]") {
+  for (const auto& settings : std::vector<std::vector<std::string>>{
+           {}, {"start=corner", "rows=1", "cols=2"}, {"rows=1", "cols=2"}}) {
+    const auto r = vt::run("position-refinement", settings).result;
+    CHECK(r.verdict == checker::Verdict::holds);
+  }
+  const vt::Run late = vt::run("position-refinement", {"start=corner", "delta=12"});
+  CHECK(late.result.verdict == checker::Verdict::violated);
+  CHECK_THAT(late.result.message,
+             Catch::Contains("a round starts with the points of the CNs ((1, 1), (0, 4)) where "
+                             "the position-level round system gives ((0, 1), (0, 4))"));
+  REQUIRE(late.result.trace);
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(late.system), *late.result.trace, &why));
+  INFO(why);
+  CHECK(vt::run("position-refinement", {"start=corner", "cn_faults=1"}).result.verdict ==
+        checker::Verdict::incomplete);
+}
+
 TEST_CASE("vn-layer round-refinement: the layer follows the round-level system on 2x1, and "
           "leaves it where calctarget sends a CN across a border",
           "[vn-layer]") {
