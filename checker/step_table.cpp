@@ -64,9 +64,22 @@ StepTable::StepTable(const tioa::Automaton& automaton)
     });
     for (const auto& set : declared.sets)
       values.sets.emplace_back(field_of_bit_[set.offset], set.code);
-    std::sort(values.sets.begin(), values.sets.end());
-    values.sets.erase(std::unique(values.sets.begin(), values.sets.end()), values.sets.end());
+    values.finish(fields_, words_);
   }
+}
+
+void StepTable::Values::finish(const std::vector<Field>& fields, std::uint32_t words) {
+  std::sort(sets.begin(), sets.end());
+  sets.erase(std::unique(sets.begin(), sets.end()), sets.end());
+  field_starts.clear();
+  set_bits.assign(words, 0);
+  for (std::size_t i = 0; i < sets.size(); ++i)
+    if (i == 0 || sets[i].first != sets[i - 1].first) {
+      field_starts.push_back(static_cast<std::uint32_t>(i));
+      const Field& f = fields[sets[i].first];
+      tioa::set_bits(set_bits.data(), f.offset, f.width);
+    }
+  field_starts.push_back(static_cast<std::uint32_t>(sets.size()));
 }
 
 std::uint32_t StepTable::point_of(std::uint32_t action, const tioa::Params& p) const {

@@ -23,6 +23,9 @@ public:
   // An action with a larger box is one whole: all its steps join the set together.
   static constexpr std::size_t max_points = 4096;
 
+  struct Field {
+    std::uint32_t offset, width;
+  };
   // What the steps of an action may write: the bits some step writes without declaring
   // the value, and the declared values as (field, code), sorted; `known` is false when its
   // steps are too many to enumerate.
@@ -30,9 +33,14 @@ public:
     bool known = false;
     std::vector<Word> plain;
     std::vector<std::pair<std::uint32_t, Word>> sets;
-  };
-  struct Field {
-    std::uint32_t offset, width;
+    // The index in `sets` of each field's first value, then sets.size(): the values of one
+    // field are looked at together; and the bits of those fields, to pass over a writer
+    // none of whose declared fields matter at once.
+    std::vector<std::uint32_t> field_starts;
+    std::vector<Word> set_bits;
+
+    // Sorts `sets`, drops repeated values and fills field_starts and set_bits.
+    void finish(const std::vector<Field>& fields, std::uint32_t words);
   };
 
   explicit StepTable(const tioa::Automaton& automaton);

@@ -155,6 +155,7 @@ const StepTable::Values& ZeroTimeReduction::writer_values(std::uint32_t action, 
     for (const auto& set : s.declared.sets)
       out.sets.emplace_back(table_.field_of_bit(set.offset), set.code);
   }
+  out.finish(table_.fields(), words_);
   return out;
 }
 
@@ -200,9 +201,14 @@ bool ZeroTimeReduction::keeps_value(const Word* state, const Word* reads, Unchan
         declared = false;
         return;
       }
-      for (const auto& [field, code] : v.sets)
-        if (overlaps(part, fields[field].offset, fields[field].width))
-          s.values.emplace_back(field, code);
+      if (!intersects(v.set_bits.data(), part, words_))
+        return;
+      for (std::size_t g = 0; g + 1 < v.field_starts.size(); ++g) {
+        const auto first = v.sets.begin() + v.field_starts[g];
+        const StepTable::Field& f = fields[first->first];
+        if (overlaps(part, f.offset, f.width))
+          s.values.insert(s.values.end(), first, v.sets.begin() + v.field_starts[g + 1]);
+      }
     });
     if (!declared)
       return false;
