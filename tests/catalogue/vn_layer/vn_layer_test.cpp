@@ -27,6 +27,14 @@ Run run(const std::string& property, const std::vector<std::string>& settings) {
   return {{}, m.system};
 }
 
+// The figure `name` of a report, or "(none)".
+std::string figure(const checker::PropertyResult& r, const std::string& name) {
+  for (const auto& [key, value] : r.figures)
+    if (key == name)
+      return value;
+  return "(none)";
+}
+
 bool has_note(const checker::PropertyResult& r, const std::string& text) {
   for (const auto& note : r.notes)
     if (note.find(text) != std::string::npos)
@@ -139,16 +147,10 @@ TEST_CASE("vn-layer cn-reports: with cn_fail=keep a CN that fails before its cn-
 // corner off the curve, the boundary branch sends one of them towards the curve.
 TEST_CASE("vn-layer reports count the branches of Fig. 7", "[vn-layer]") {
   const auto r = vt::run("y-consistency", {"start=corner"}).result;
-  const auto figure = [&](const std::string& name) -> std::string {
-    for (const auto& [key, value] : r.figures)
-      if (key == name)
-        return value;
-    return "(none)";
-  };
-  CHECK(figure("Fig. 7 computations (distinct)") == "4");
-  CHECK(figure("Fig. 7 lines 19-22 boundary, reassigning") == "1");
-  CHECK(figure("Fig. 7 lines 30-31 robots to a neighbour's centre") == "1");
-  CHECK(figure("Fig. 7 lines 7-12 on the curve, reassigning") == "0");
+  CHECK(vt::figure(r, "Fig. 7 computations (distinct)") == "4");
+  CHECK(vt::figure(r, "Fig. 7 lines 19-22 boundary, reassigning") == "1");
+  CHECK(vt::figure(r, "Fig. 7 lines 30-31 robots to a neighbour's centre") == "1");
+  CHECK(vt::figure(r, "Fig. 7 lines 7-12 on the curve, reassigning") == "0");
 }
 
 // round-refinement's reference: assign per zone on the counts of a round start. On 2×1 (zone
@@ -213,19 +215,13 @@ TEST_CASE("vn-layer position-refinement: the layer follows the position-level ro
 TEST_CASE("vn-layer round-refinement: the layer follows the round-level system on 2x1, and "
           "leaves it where calctarget sends a CN across a border",
           "[vn-layer]") {
-  const auto figure = [](const checker::PropertyResult& r, const std::string& name) {
-    for (const auto& [key, value] : r.figures)
-      if (key == name)
-        return value;
-    return std::string("(none)");
-  };
   {
     const auto r = vt::run("round-refinement", {}).result;
     CHECK(r.verdict == checker::Verdict::holds);
     CHECK(r.states == 105'854);
     CHECK(r.coverage.count == 225);
-    CHECK(figure(r, "round starts") == "1350");
-    CHECK(figure(r, "rounds checked") == "2025");
+    CHECK(vt::figure(r, "round starts") == "1350");
+    CHECK(vt::figure(r, "rounds checked") == "2025");
   }
   // 1×2: calctarget's line 36 sends the second CN to the far end of Γ_0, which zone 1 owns
   // (V4): the next round starts with (1, 1) where assign moved nobody.
@@ -286,29 +282,23 @@ TEST_CASE("vn-layer round-timing: the worst times against the stated ones", "[vn
 TEST_CASE("vn-layer stabilisation: the assignment settles and C_in is on the curve by "
           "T_stab + 2, unless a VN may fail for ever",
           "[vn-layer]") {
-  const auto figure = [](const checker::PropertyResult& r, const std::string& name) {
-    for (const auto& [key, value] : r.figures)
-      if (key == name)
-        return value;
-    return std::string("(none)");
-  };
   {
     const auto r = vt::run("stabilisation", {}).result;
     CHECK(r.verdict == checker::Verdict::holds);
     CHECK(r.states == 105'854);
     CHECK(r.coverage.count == 225);
-    CHECK(figure(r, "round starts") == "1350");
-    CHECK(figure(r, "T_out (worst)") == "2");
-    CHECK(figure(r, "T_stab (worst)") == "2");
-    CHECK(figure(r, "starts where T_stab = the round-level system's") == "225 of 225");
-    CHECK(figure(r, "C_in on Gamma from, after T_stab (worst)") == "T_stab + 2");
+    CHECK(vt::figure(r, "round starts") == "1350");
+    CHECK(vt::figure(r, "T_out (worst)") == "2");
+    CHECK(vt::figure(r, "T_stab (worst)") == "2");
+    CHECK(vt::figure(r, "starts where T_stab = the round-level system's") == "225 of 225");
+    CHECK(vt::figure(r, "C_in on Gamma from, after T_stab (worst)") == "T_stab + 2");
   }
   // 1×2: the migration of V4 moves a CN across the border a round after the counts settle.
   {
     const auto r = vt::run("stabilisation", {"rows=1", "cols=2"}).result;
     CHECK(r.verdict == checker::Verdict::holds);
-    CHECK(figure(r, "T_stab (worst)") == "3");
-    CHECK(figure(r, "starts where T_stab = the round-level system's") == "189 of 225");
+    CHECK(vt::figure(r, "T_stab (worst)") == "3");
+    CHECK(vt::figure(r, "starts where T_stab = the round-level system's") == "189 of 225");
     CHECK(vt::has_note(r, "on 36 start states the worst T_stab differs"));
   }
   const vt::Run failing = vt::run("stabilisation", {"vn_fail=any", "cns=1"});
@@ -316,7 +306,7 @@ TEST_CASE("vn-layer stabilisation: the assignment settles and C_in is on the cur
   CHECK(r.verdict == checker::Verdict::violated);
   CHECK_THAT(r.message, Catch::Contains("with a CN of C_in off Gamma at the start of round 2 (2 "
                                         "rounds after T_stab"));
-  CHECK(figure(r, "C_in on Gamma from round (worst)") == "unbounded");
+  CHECK(vt::figure(r, "C_in on Gamma from round (worst)") == "unbounded");
   REQUIRE(r.trace);
   CHECK(r.trace_kind == "lasso");
   CHECK(r.trace->loop_start);
