@@ -58,4 +58,20 @@ Settling settling_of(const RoundGraph& g, const Components& c,
                      const std::function<bool(Node)>& at_node,
                      const std::function<bool(Node, Node)>& on_arc);
 
+// A shortest path of rounds from a start state to `to` (nodes, the start state first).
+std::vector<Node> path_from_start(const RoundGraph& g, Node to);
+
+// A shortest path of rounds from `from` to `to` along arcs `keep` admits (from excluded);
+// throws when there is none.
+std::vector<Node> path_between(const RoundGraph& g, Node from, Node to,
+                               const std::function<bool(Node, Node)>& keep);
+
+// Follows arcs `keep` admits from `from` through nodes `stay` holds (the first such arc of
+// each node) until a node repeats: the nodes after `from`, and the place where the cycle
+// begins, counting `from` as 0 (the last node is the node at that place). Throws when a
+// node on the way has no such arc.
+std::pair<std::vector<Node>, std::size_t> cycle_from(const RoundGraph& g, Node from,
+                                                     const std::vector<std::uint8_t>& stay,
+                                                     const std::function<bool(Node, Node)>& keep);
+
 } // namespace vn_layer

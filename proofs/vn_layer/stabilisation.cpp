@@ -60,48 +60,6 @@ std::string rounds_text(std::uint32_t rounds) {
   return rounds == unbounded ? "unbounded" : std::to_string(rounds);
 }
 
-// A shortest path of rounds from a start state to `to` (nodes, the start state first).
-std::vector<Node> path_from_start(const RoundGraph& g, Node to) {
-  std::vector<Node> parent(g.size(), no_node), queue;
-  for (Node v = 0; v < g.starts; ++v) {
-    parent[v] = v;
-    queue.push_back(v);
-  }
-  for (std::size_t i = 0; i < queue.size(); ++i)
-    g.for_arcs(queue[i], [&](Node w) {
-      if (parent[w] == no_node) {
-        parent[w] = queue[i];
-        queue.push_back(w);
-      }
-    });
-  std::vector<Node> path{to};
-  while (parent[path.back()] != path.back())
-    path.push_back(parent[path.back()]);
-  std::reverse(path.begin(), path.end());
-  return path;
-}
-
-// A shortest path of rounds from `from` to `to` along arcs `keep` admits (from excluded).
-std::vector<Node> path_between(const RoundGraph& g, Node from, Node to,
-                               const std::function<bool(Node, Node)>& keep) {
-  std::vector<Node> parent(g.size(), no_node), queue{from};
-  parent[from] = from;
-  for (std::size_t i = 0; i < queue.size() && parent[to] == no_node; ++i)
-    g.for_arcs(queue[i], [&](Node w) {
-      if (parent[w] == no_node && keep(queue[i], w)) {
-        parent[w] = queue[i];
-        queue.push_back(w);
-      }
-    });
-  if (parent[to] == no_node)
-    throw std::logic_error("stabilisation: no path of rounds where one was found before");
-  std::vector<Node> path;
-  for (Node v = to; v != from; v = parent[v])
-    path.push_back(v);
-  std::reverse(path.begin(), path.end());
-  return path;
-}
-
 // The trace of a path of rounds (its first node a start state), each round's steps found
 // again by searching it; `loop_node`: the index in `rounds` where a lasso's cycle begins
 // (the last node equals it).
@@ -131,31 +89,6 @@ checker::Trace trace_of_rounds(const tioa::SuccessorGenerator& gen, const checke
   if (!extended)
     throw std::logic_error("stabilisation: an edge of the graph is no step of the model");
   return trace;
-}
-
-// Follows arcs `keep` admits from `from` through nodes `stay` holds until a node repeats: the
-// nodes after `from` and the index among them where the cycle begins.
-std::pair<std::vector<Node>, std::size_t> cycle_from(const RoundGraph& g, Node from,
-                                                     const std::vector<std::uint8_t>& stay,
-                                                     const std::function<bool(Node, Node)>& keep) {
-  std::vector<std::size_t> seen_at(g.size(), no_node);
-  std::vector<Node> path;
-  Node v = from;
-  seen_at[from] = 0;
-  for (;;) {
-    Node step = no_node;
-    g.for_arcs(v, [&](Node w) {
-      if (step == no_node && stay[w] && keep(v, w))
-        step = w;
-    });
-    if (step == no_node)
-      throw std::logic_error("stabilisation: a round start that can stay fixed has no next round");
-    path.push_back(step);
-    if (seen_at[step] != no_node)
-      return {path, seen_at[step]};
-    seen_at[step] = path.size();
-    v = step;
-  }
 }
 
 } // namespace

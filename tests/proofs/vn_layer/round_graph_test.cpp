@@ -2,6 +2,7 @@
 // the worst round after the last event can be counted by hand.
 #include <catch2/catch.hpp>
 
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -95,4 +96,31 @@ TEST_CASE("round graph: a cycle before an event makes the worst unbounded, an ev
       g, c, [](vn_layer::Node v) { return v == 2; }, on_arcs({}));
   REQUIRE(at_node.endless);
   CHECK(at_node.endless->first == 2);
+}
+
+TEST_CASE("round graph: shortest paths of rounds, and a lasso along chosen arcs", "[vn-layer]") {
+  // 0 -> 1 -> 2 -> 3 -> 1, 0 -> 4 -> 3, 4 -> 4.
+  const auto g = graph(5, {{0, 1}, {1, 2}, {2, 3}, {3, 1}, {0, 4}, {4, 3}, {4, 4}});
+  CHECK(vn_layer::path_from_start(g, 3) == std::vector<vn_layer::Node>{0, 4, 3});
+  CHECK(vn_layer::path_from_start(g, 0) == std::vector<vn_layer::Node>{0});
+  const auto any = [](vn_layer::Node, vn_layer::Node) { return true; };
+  CHECK(vn_layer::path_between(g, 3, 2, any) == std::vector<vn_layer::Node>{1, 2});
+  const auto not_via_one = [](vn_layer::Node, vn_layer::Node to) { return to != 1; };
+  CHECK_THROWS_AS(vn_layer::path_between(g, 3, 2, not_via_one), std::logic_error);
+
+  // From 0 along the first arc each time: 1 2 3 1, the cycle at place 1.
+  const std::vector<std::uint8_t> all(5, 1);
+  const auto [walk, place] = vn_layer::cycle_from(g, 0, all, any);
+  CHECK(walk == std::vector<vn_layer::Node>{1, 2, 3, 1});
+  CHECK(place == 1);
+  // Kept off 1 and 3: 4 and its loop, the cycle at place 1 again (0 4 4).
+  std::vector<std::uint8_t> off = all;
+  off[1] = off[3] = 0;
+  const auto [loop, at] = vn_layer::cycle_from(g, 0, off, any);
+  CHECK(loop == std::vector<vn_layer::Node>{4, 4});
+  CHECK(at == 1);
+  // Kept off 1 only: 0 4 3, and 3 has no arc left (its only one leads to 1).
+  std::vector<std::uint8_t> stuck = all;
+  stuck[1] = 0;
+  CHECK_THROWS_AS(vn_layer::cycle_from(g, 0, stuck, any), std::logic_error);
 }
