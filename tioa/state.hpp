@@ -73,7 +73,7 @@ public:
     }
   }
 
-  template <class T> T get(const Slot& slot) const {
+  template <class T> [[gnu::always_inline]] T get(const Slot& slot) const {
     const std::uint64_t c = code(slot);
     if (slot.has_bottom && c == slot.value_codes) [[unlikely]]
       throw_read_of_bottom(slot);
@@ -90,10 +90,12 @@ public:
     set_code(slot, static_cast<std::uint64_t>(code));
   }
 
-  template <class T> T get(const Variable<T>& v) const { return get<T>(v.slot); }
+  template <class T> [[gnu::always_inline]] T get(const Variable<T>& v) const {
+    return get<T>(v.slot);
+  }
   template <class T> void set(const Variable<T>& v, T value) { set<T>(v.slot, value); }
 
-  template <class T> bool is_bottom(const Variable<T>& v) const {
+  template <class T> [[gnu::always_inline]] bool is_bottom(const Variable<T>& v) const {
     return v.slot.has_bottom && code(v.slot) == v.slot.value_codes;
   }
   template <class T> void set_bottom(const Variable<T>& v) {
@@ -112,7 +114,9 @@ public:
   template <class T> VariableRef<T> operator[](const Variable<T>& v) {
     return VariableRef<T>(*this, v.slot);
   }
-  template <class T> T operator[](const Variable<T>& v) const { return get<T>(v.slot); }
+  template <class T> [[gnu::always_inline]] T operator[](const Variable<T>& v) const {
+    return get<T>(v.slot);
+  }
 
   Word* words() const { return words_; }
   std::uint32_t base() const { return base_; }
