@@ -167,4 +167,33 @@ std::pair<std::vector<Node>, std::size_t> cycle_from(const RoundGraph& g, Node f
   }
 }
 
+std::vector<std::uint8_t> endless_from(const RoundGraph& g,
+                                       const std::function<bool(Node, Node)>& keep) {
+  // Take away, until none is left, every node with no admitted arc to a node still in.
+  const Node n = g.size();
+  std::vector<std::uint8_t> endless(n, 1);
+  std::vector<std::uint32_t> out(n, 0);
+  std::vector<std::vector<Node>> back(n);
+  std::vector<Node> queue;
+  for (Node v = 0; v < n; ++v)
+    g.for_arcs(v, [&](Node w) {
+      if (keep(v, w)) {
+        ++out[v];
+        back[w].push_back(v);
+      }
+    });
+  for (Node v = 0; v < n; ++v)
+    if (out[v] == 0) {
+      endless[v] = 0;
+      queue.push_back(v);
+    }
+  for (std::size_t i = 0; i < queue.size(); ++i)
+    for (const Node u : back[queue[i]])
+      if (endless[u] && --out[u] == 0) {
+        endless[u] = 0;
+        queue.push_back(u);
+      }
+  return endless;
+}
+
 } // namespace vn_layer

@@ -66,6 +66,11 @@ std::vector<Node> path_from_start(const RoundGraph& g, Node to);
 std::vector<Node> path_between(const RoundGraph& g, Node from, Node to,
                                const std::function<bool(Node, Node)>& keep);
 
+// Per node, whether an endless path of arcs `keep` admits begins there (the nodes that
+// can reach a cycle of such arcs along such arcs).
+std::vector<std::uint8_t> endless_from(const RoundGraph& g,
+                                       const std::function<bool(Node, Node)>& keep);
+
 // Follows arcs `keep` admits from `from` through nodes `stay` holds (the first such arc of
 // each node) until a node repeats: the nodes after `from`, and the place where the cycle
 // begins, counting `from` as 0 (the last node is the node at that place). Throws when a

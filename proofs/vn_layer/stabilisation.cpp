@@ -93,6 +93,22 @@ checker::Trace trace_of_rounds(const tioa::SuccessorGenerator& gen, const checke
 
 } // namespace
 
+std::uint32_t round_level_t_stab(const VnConfig& c, const std::vector<int>& start_counts) {
+  // R_0 = the start counts, R_{j+1} the round-level system's from R_j, up to a repeat.
+  std::vector<std::vector<int>> counts{start_counts};
+  for (;;) {
+    std::vector<int> after = counts_after_round(c, counts.back());
+    const auto seen = std::find(counts.begin(), counts.end(), after);
+    if (seen == counts.end() - 1) { // a fixed point from R_j on: the layer's round j + 1
+      const auto j = static_cast<std::uint32_t>(counts.size() - 1);
+      return j == 0 ? 0 : j + 1;
+    }
+    if (seen != counts.end())
+      return unbounded; // a cycle of counts
+    counts.push_back(std::move(after));
+  }
+}
+
 checker::PropertyResult check_stabilisation(const VnConfig& c, const tioa::Automaton& system,
                                             const checker::ExploreOptions& options,
                                             bool cn_faults) {
@@ -198,20 +214,7 @@ checker::PropertyResult check_stabilisation(const VnConfig& c, const tioa::Autom
   std::uint64_t equal = 0;
   std::int64_t widest = 0;
   for (Node v = 0; v < g.starts; ++v) {
-    // R_0 = the start counts, R_{j+1} the round-level system's from R_j, up to a repeat.
-    std::vector<std::vector<int>> counts{view.counts(ex.store.state(g.state[v]))};
-    std::uint32_t level = unbounded;
-    for (;;) {
-      std::vector<int> after = counts_after_round(c, counts.back());
-      const auto seen = std::find(counts.begin(), counts.end(), after);
-      if (seen == counts.end() - 1) { // a fixed point from R_j on: the layer's round j + 1
-        const auto j = static_cast<std::uint32_t>(counts.size() - 1);
-        level = j == 0 ? 0 : j + 1;
-      }
-      if (seen != counts.end())
-        break; // the fixed point, or a cycle of counts (unbounded)
-      counts.push_back(std::move(after));
-    }
+    const std::uint32_t level = round_level_t_stab(c, view.counts(ex.store.state(g.state[v])));
     if (level == stab.worst[v])
       ++equal;
     else if (level != unbounded && stab.worst[v] != unbounded)
@@ -254,30 +257,9 @@ checker::PropertyResult check_stabilisation(const VnConfig& c, const tioa::Autom
   // fixed for ever (an endless path of rounds without a change) and a CN is off Γ at 2 or
   // more breaks the claim.
   const Node n = g.size();
-  std::vector<std::uint8_t> can_stay(n, 1); // an endless path without a change from here
-  {
-    std::vector<std::uint32_t> stays(n, 0);
-    std::vector<std::vector<Node>> back(n);
-    std::vector<Node> queue;
-    for (Node v = 0; v < n; ++v)
-      g.for_arcs(v, [&](Node w) {
-        if (!moves(v, w)) {
-          ++stays[v];
-          back[w].push_back(v);
-        }
-      });
-    for (Node v = 0; v < n; ++v)
-      if (stays[v] == 0) {
-        can_stay[v] = 0;
-        queue.push_back(v);
-      }
-    for (std::size_t i = 0; i < queue.size(); ++i)
-      for (const Node u : back[queue[i]])
-        if (can_stay[u] && --stays[u] == 0) {
-          can_stay[u] = 0;
-          queue.push_back(u);
-        }
-  }
+  // An endless path of rounds without a change from here.
+  const std::vector<std::uint8_t> can_stay =
+      endless_from(g, [&](Node v, Node w) { return !moves(v, w); });
   constexpr std::uint32_t levels = 4; // rounds since the last change: 0, 1, 2, 3 or more
   std::vector<std::uint32_t> parent(std::size_t{n} * levels, no_node);
   std::vector<std::uint32_t> queue;

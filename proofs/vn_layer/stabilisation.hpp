@@ -15,10 +15,19 @@
 // T_stab (002:234, 264, 286), so their worst values are measured and set beside the
 // round-level system's from the same start counts, not judged.
 
+#include <cstdint>
+#include <vector>
+
 #include "checker/checks.hpp"
 #include "models/vn_layer/config.hpp"
 
 namespace vn_layer {
+
+// The round-level system's T_stab from `start_counts` (counts per zone at time 0), in the
+// layer's numbering: the first round from which the counts at round starts stay fixed, the
+// layer's rounds 0 and 1 both holding the start counts (the VNs skip round 0, C12);
+// `unbounded` (round_graph.hpp) when the counts cycle.
+std::uint32_t round_level_t_stab(const VnConfig& config, const std::vector<int>& start_counts);
 
 // Violated with a lasso: an execution whose assignment changes for ever (1), or one whose
 // assignment stays fixed from round T on while a CN of C_in is off Γ at round T + 2 or

@@ -9,6 +9,7 @@
 #include "checker/property.hpp"
 #include "checker/trace.hpp"
 #include "proofs/vn_layer/round_refinement.hpp"
+#include "proofs/vn_layer/stabilisation.hpp"
 
 namespace vn_layer_test {
 
@@ -163,6 +164,15 @@ TEST_CASE("vn-layer: the round-level counts one round later", "[vn-layer]") {
   CHECK(vn_layer::counts_after_round(c, {2, 0}) == std::vector<int>{2, 0});
   c.rows = 1;
   CHECK(vn_layer::counts_after_round(c, {2}) == std::vector<int>{2});
+}
+
+// stabilisation's reference: from (0, 2) the counts are (0, 2) at the layer's rounds 0 and
+// 1 (round 0 skipped) and (1, 1) from round 2 on; (1, 1) and (2, 0) never change.
+TEST_CASE("vn-layer: the round-level T_stab in the layer's numbering", "[vn-layer]") {
+  const vn_layer::VnConfig c;
+  CHECK(vn_layer::round_level_t_stab(c, {0, 2}) == 2);
+  CHECK(vn_layer::round_level_t_stab(c, {1, 1}) == 0);
+  CHECK(vn_layer::round_level_t_stab(c, {2, 0}) == 0);
 }
 
 // position-refinement's reference: assign and calctarget per zone on the points of a round

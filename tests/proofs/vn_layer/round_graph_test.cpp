@@ -124,3 +124,13 @@ TEST_CASE("round graph: shortest paths of rounds, and a lasso along chosen arcs"
   stuck[1] = 0;
   CHECK_THROWS_AS(vn_layer::cycle_from(g, 0, stuck, any), std::logic_error);
 }
+
+TEST_CASE("round graph: the nodes where an endless path of admitted arcs begins", "[vn-layer]") {
+  // 0 -> 1 -> 2 -> 1, 0 -> 3 (no arc out), 4 -> 4.
+  const auto g = graph(5, {{0, 1}, {1, 2}, {2, 1}, {0, 3}, {4, 4}});
+  const auto any = [](vn_layer::Node, vn_layer::Node) { return true; };
+  CHECK(vn_layer::endless_from(g, any) == std::vector<std::uint8_t>{1, 1, 1, 0, 1});
+  // Without 2 -> 1 the cycle is gone, and so are the paths to it.
+  const auto not_back = [](vn_layer::Node v, vn_layer::Node w) { return !(v == 2 && w == 1); };
+  CHECK(vn_layer::endless_from(g, not_back) == std::vector<std::uint8_t>{0, 0, 0, 0, 1});
+}
