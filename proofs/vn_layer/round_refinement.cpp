@@ -169,12 +169,7 @@ checker::PropertyResult check_reading(const VnConfig& c, const tioa::Automaton& 
     // A shortest path to the round start before, then the round's path to the mismatch
     // (each step an edge of the graph).
     checker::Trace trace = checker::trace_to(gen, ex, mismatch->before);
-    bool extended = true;
-    for (const StateId w : mismatch->within)
-      extended = extended && checker::extend(gen, trace, ex.store.state(w));
-    extended = extended && checker::extend(gen, trace, ex.store.state(mismatch->after), 1u);
-    if (!extended)
-      throw std::logic_error(reading.property + ": an edge of the graph is no step of the model");
+    extend_by_round(gen, ex, trace, mismatch->within, mismatch->after);
     r.verdict = checker::Verdict::violated;
     r.trace = std::move(trace);
     r.trace_role = "counterexample";

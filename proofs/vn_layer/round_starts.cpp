@@ -1,6 +1,7 @@
 #include "proofs/vn_layer/round_starts.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "models/vn_layer/names.hpp"
 #include "tioa/operators.hpp"
@@ -63,6 +64,16 @@ std::vector<StateId> RoundWalker::path_within(StateId start, StateId v) const {
     path.push_back(w);
   std::reverse(path.begin(), path.end());
   return path;
+}
+
+void extend_by_round(const tioa::SuccessorGenerator& generator, const checker::Exploration& ex,
+                     checker::Trace& trace, const std::vector<StateId>& within, StateId to) {
+  bool extended = true;
+  for (const StateId w : within)
+    extended = extended && checker::extend(generator, trace, ex.store.state(w));
+  extended = extended && checker::extend(generator, trace, ex.store.state(to), 1u);
+  if (!extended)
+    throw std::logic_error("vn-layer rounds: an edge of the graph is no step of the model");
 }
 
 } // namespace vn_layer

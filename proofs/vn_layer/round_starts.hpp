@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "checker/explorer.hpp"
+#include "checker/trace.hpp"
 #include "models/vn_layer/config.hpp"
 #include "tioa/automaton.hpp"
 
@@ -82,5 +83,12 @@ private:
   std::vector<checker::StateId> came_from_;
   std::vector<checker::StateId> queue_;
 };
+
+// Appends one round to `trace`, whose last state is the round's start: the states
+// `within` it (in order), then the tick into the round start `to`. Throws when a step is
+// no step of the model (the states come from the graph, so that is a bug).
+void extend_by_round(const tioa::SuccessorGenerator& generator, const checker::Exploration& ex,
+                     checker::Trace& trace, const std::vector<checker::StateId>& within,
+                     checker::StateId to);
 
 } // namespace vn_layer

@@ -37,16 +37,16 @@ RoundFacts facts_of(const RoundGraph& g, const checker::Exploration& ex, const R
   const auto q = vlayer_mc::curve_q(view.lattice);
   RoundFacts f;
   for (Node v = 0; v < g.size(); ++v) {
-    const tioa::Word* state = ex.store.state(g.state[v]);
-    const tioa::State s(state, 0);
-    std::vector<int> zones = view.zones(state), out = zones;
+    const std::vector<int> points = view.points(ex.store.state(g.state[v]));
+    std::vector<int> zones = points, out = points; // −1 stays for a failed CN
     bool on = true;
-    for (std::size_t i = 0; i < zones.size(); ++i) {
-      if (zones[i] < 0)
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (points[i] < 0)
         continue;
+      zones[i] = out[i] = view.lattice.region_of(points[i]);
       if (q[static_cast<std::size_t>(zones[i])] != 0) {
         out[i] = -2;
-        on = on && vlayer_mc::on_curve(view.lattice, zones[i], s[view.x[i]]);
+        on = on && vlayer_mc::on_curve(view.lattice, zones[i], points[i]);
       }
     }
     f.zones.push_back(std::move(zones));
@@ -68,7 +68,6 @@ checker::Trace trace_of_rounds(const tioa::SuccessorGenerator& gen, const checke
                                const std::vector<Node>& rounds,
                                std::optional<std::size_t> loop_node) {
   checker::Trace trace = checker::trace_to(gen, ex, g.state[rounds.front()]);
-  bool extended = true;
   for (std::size_t i = 0; i + 1 < rounds.size(); ++i) {
     if (loop_node && *loop_node == i)
       trace.loop_start = trace.steps.size() - 1;
@@ -82,12 +81,8 @@ checker::Trace trace_of_rounds(const tioa::SuccessorGenerator& gen, const checke
     });
     if (last == checker::no_parent)
       throw std::logic_error("stabilisation: a round of the graph was not found again");
-    for (const StateId w : walker.path_within(from, last))
-      extended = extended && checker::extend(gen, trace, ex.store.state(w));
-    extended = extended && checker::extend(gen, trace, ex.store.state(to), 1u);
+    extend_by_round(gen, ex, trace, walker.path_within(from, last), to);
   }
-  if (!extended)
-    throw std::logic_error("stabilisation: an edge of the graph is no step of the model");
   return trace;
 }
 
