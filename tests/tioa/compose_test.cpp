@@ -484,6 +484,35 @@ TEST_CASE("compose: an input stays an input where no output covers its parameter
   CHECK(nested.states == flat.states);
 }
 
+TEST_CASE("compose: an input box too large to enumerate is dropped when an output box holds it",
+          "[tioa][compose]") {
+  // Regression: vn-layer's send_target_update has one parameter per CN over the lattice's
+  // points; with 3 CNs and b = 8, 154³ points. The box was too large to check point by point,
+  // so the input stayed, and the explorer tried all 3.6 million points in every state.
+  const auto wide = [](const std::string& name, ActionKind kind, int top) {
+    Automaton a(name);
+    const auto done = a.boolean("done", false);
+    const std::vector<ParamRange> box{{"x", 0, 199}, {"y", 0, 199}, {"z", 0, top}};
+    if (kind == ActionKind::output)
+      a.output("go", box)
+          .pre([=](const State& s, const Params&) { return !s[done]; })
+          .eff([=](State& s, const Params&) { s[done] = true; });
+    else
+      a.input("go", box).eff([=](State& s, const Params&) { s[done] = true; });
+    return a;
+  };
+  const auto has_input = [](const Automaton& a) {
+    return std::any_of(a.actions().begin(), a.actions().end(), [](const ActionSignature& sig) {
+      return sig.kind == ActionKind::input && sig.name == "go";
+    });
+  };
+  CHECK_FALSE(has_input(
+      compose("sys", {wide("out", ActionKind::output, 199), wide("in", ActionKind::input, 199)})));
+  // An output box one value short in one parameter leaves the input in place.
+  CHECK(has_input(
+      compose("sys", {wide("out", ActionKind::output, 198), wide("in", ActionKind::input, 199)})));
+}
+
 TEST_CASE("compose: an environment input reaches all of 64 components", "[tioa][compose]") {
   // Regression: compose() allows 64 components; an unmatched input shared by all of them
   // has 65 participants (the environment and 64 receivers), and synchronised() once kept
