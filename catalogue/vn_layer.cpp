@@ -94,10 +94,11 @@ ModelDefinition vn_layer_definition() {
                      "reports in every round (the premise of Theorem 1(2); cn_fail=keep "
                      "breaks it)"},
       {"stabilisation", "Theorem 1 round by round: on every execution the assignment becomes "
-                        "fixed (T_stab), and every CN in a zone with q_h != 0 is on Gamma_h "
-                        "from round T_stab + 2 on (seed 002 §VI, line 302); worst T_out and "
-                        "T_stab beside the round-level system's (docs/design/vn-layer.md "
-                        "§5.3, check 6)"}};
+                        "fixed (T_stab) within Lemma 6's proportionality bound, and every CN "
+                        "in a zone with q_h != 0 is on Gamma_h from round T_stab + 2 on (seed "
+                        "002 §VI, lines 236, 302); worst T_out and T_stab beside the "
+                        "round-level system's, and the distance to even spacing in the limit "
+                        "(Lemma 7, measured) (docs/design/vn-layer.md §5.3, check 6)"}};
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     if (p.at("nbh") != 4 && p.at("nbh") != 8)
       return "nbh must be 4 or 8, not " + p.at("nbh").text();

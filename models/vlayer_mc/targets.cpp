@@ -20,6 +20,12 @@ bool on_curve(const Lattice& lattice, RegionId u, Point p) {
   return lattice.y_of(p) == lattice.b() / 2 && x >= inf && x <= inf + lattice.b();
 }
 
+CurveEnds curve_ends(const Lattice& lattice, RegionId u, bool owned_ends) {
+  const int inf = (u % lattice.cols()) * lattice.b();
+  const bool last_column = u % lattice.cols() == lattice.cols() - 1;
+  return {inf, inf + lattice.b() - (owned_ends && !last_column ? 1 : 0)};
+}
+
 std::vector<std::optional<Point>> compute_targets(const VlConfig& c, RegionId u,
                                                   const std::vector<std::optional<Point>>& reported,
                                                   const std::vector<int>& counts,
@@ -52,11 +58,8 @@ std::vector<std::optional<Point>> compute_targets(const VlConfig& c, RegionId u,
   taken.to_centre = static_cast<int>(next);
 
   const bool on_curve_region = q[static_cast<std::size_t>(u)] != 0;
-  // P_u = [inf, sup] on the lattice; with owned_ends (D14) only the points u owns: the
-  // next region owns x = sup unless u is in the last column.
-  const int b = lattice.b(), inf = (u % lattice.cols()) * b, curve_y = b / 2;
-  const bool last_column = u % lattice.cols() == lattice.cols() - 1;
-  const int sup = inf + b - (c.owned_ends && !last_column ? 1 : 0);
+  const auto [inf, sup] = curve_ends(lattice, u, c.owned_ends);
+  const int curve_y = lattice.b() / 2;
   std::vector<std::pair<int, int>> seq; // (x, id) of the staying robots on Γ_u (line 27)
   for (std::size_t i = next; i < members.size(); ++i) {
     const int p = members[i];

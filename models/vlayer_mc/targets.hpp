@@ -28,6 +28,14 @@ std::vector<mc::QuantisedLength> curve_q(const Lattice& lattice);
 // p lies on the closure of Γ_u (false where Γ_u is empty).
 bool on_curve(const Lattice& lattice, RegionId u, Point p);
 
+// P_u on the lattice as calctarget uses it (Fig. 7 lines 33–36): the x of Γ_u's ends,
+// inf P_u = col·b and sup P_u = inf + b; with owned_ends (D14) only the points u owns, so
+// sup P_u = inf + b − 1 unless u is in the last column. Meaningful where q_u ≠ 0.
+struct CurveEnds {
+  int inf, sup;
+};
+CurveEnds curve_ends(const Lattice& lattice, RegionId u, bool owned_ends);
+
 // reported[p]: M_u(p) (nullopt: p ∉ dom M_u); counts[i]: V_u(nbrs(u)[i]).
 // Returns the target of every p ∈ dom M_u (nullopt for the others); `branches`, when given,
 // says which branches of Fig. 7 gave them.

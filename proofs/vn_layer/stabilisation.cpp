@@ -14,6 +14,7 @@
 #include "checker/run_limits.hpp"
 #include "checker/trace.hpp"
 #include "models/vlayer_mc/targets.hpp"
+#include "proofs/vn_layer/assignment_measures.hpp"
 #include "proofs/vn_layer/layer_checks.hpp"
 #include "proofs/vn_layer/round_graph.hpp"
 #include "proofs/vn_layer/round_refinement.hpp"
@@ -25,11 +26,11 @@ using checker::StateId;
 
 namespace {
 
-// What a round start says of the CNs: the zone of each (the assignment the round before
-// made; −1 for a failed CN), the same restricted to zones with q_h = 0 (−2 elsewhere), and
-// whether every active CN in a zone with q_h ≠ 0 stands on Γ_h.
+// What a round start says of the CNs: the point of each and its zone (the assignment the
+// round before made; −1 for a failed CN), the zones restricted to those with q_h = 0 (−2
+// elsewhere), and whether every active CN in a zone with q_h ≠ 0 stands on Γ_h.
 struct RoundFacts {
-  std::vector<std::vector<int>> zones, out_zones;
+  std::vector<std::vector<int>> points, zones, out_zones;
   std::vector<std::uint8_t> on_curve;
 };
 
@@ -49,6 +50,7 @@ RoundFacts facts_of(const RoundGraph& g, const checker::Exploration& ex, const R
         on = on && vlayer_mc::on_curve(view.lattice, zones[i], points[i]);
       }
     }
+    f.points.push_back(points);
     f.zones.push_back(std::move(zones));
     f.out_zones.push_back(std::move(out));
     f.on_curve.push_back(on ? 1 : 0);
@@ -134,6 +136,14 @@ checker::PropertyResult check_stabilisation(const VnConfig& c, const tioa::Autom
       "C_in at round T_stab + 2 and later: every active CN in a zone with q_h != 0 (each such "
       "zone has held the same CNs for two rounds, so its VN is active, 002:230); on Gamma: on "
       "the closure of Gamma_h of its own zone h");
+  r.notes.push_back(
+      "proportionality (002:236, Lemma 6): at every round start from which the assignment may "
+      "stay fixed for ever, over the zones In with q_h != 0 holding a CN; m = max(rows, cols); "
+      "the exact bound, not its ceiling");
+  r.notes.push_back(
+      "even spacing in the limit (002:238, Lemma 7): measured, not judged, at the round starts "
+      "on a cycle of rounds; the lattice rounds calctarget's points down, so a point may stop "
+      "short of its place (the exact limit: mc-round lemma-6.8)");
   note_round_rules(c, r);
   if (!ex.complete()) {
     checker::mark_incomplete(r, ex, "no execution found that breaks Theorem 1 so far");
@@ -225,6 +235,62 @@ checker::PropertyResult check_stabilisation(const VnConfig& c, const tioa::Autom
                       std::to_string(widest) +
                       " rounds where both are finite): see round-refinement");
 
+  // The round starts at or after T_stab on some execution: those from which an endless
+  // path of rounds without a change begins.
+  const std::vector<std::uint8_t> can_stay =
+      endless_from(g, [&](Node v, Node w) { return !moves(v, w); });
+
+  // Theorem 1(1)'s proportionality, Lemma 6 (002:236, 296–298), at each of them.
+  const auto q = vlayer_mc::curve_q(view.lattice);
+  const mc::Rational bound = proportionality_bound(c);
+  mc::Rational widest_spread(0);
+  Node spread_at = no_node; // the first (so nearest the start states) beyond the bound
+  for (Node v = 0; v < g.size(); ++v) {
+    if (!can_stay[v])
+      continue;
+    const mc::Rational spread = density_spread(view.counts(ex.store.state(g.state[v])), q);
+    widest_spread = std::max(widest_spread, spread);
+    if (spread > bound && spread_at == no_node)
+      spread_at = v;
+  }
+  r.figures.emplace_back("|y_h/q_h - y_g/q_g| from T_stab on (worst)",
+                         mc::to_string(widest_spread) +
+                             ", bound 10(2m-1)/(q_min rho2) = " + mc::to_string(bound));
+  // No density exceeds cns/q_min, so a bound at or above it cannot be broken here.
+  mc::QuantisedLength q_min = 0;
+  for (const mc::QuantisedLength length : q)
+    if (length != 0 && (q_min == 0 || length < q_min))
+      q_min = length;
+  if (mc::Rational(c.cns, q_min) <= bound)
+    r.notes.push_back("proportionality cannot fail on this instance: every y_h/q_h is at most "
+                      "cns/q_min = " +
+                      mc::to_string(mc::Rational(c.cns, q_min)) +
+                      ", within the bound; the measured spread says how far from it the "
+                      "assignment is");
+
+  // Lemma 7 (002:304–318), measured: the round starts an execution can visit for ever are
+  // those on a cycle of rounds; there, each zone's distance to even spacing. Not judged:
+  // the lattice rounds calctarget's points down (targets.hpp), so an interior CN stops once
+  // ρ1 times its distance to its neighbours' midpoint is below one unit, and the exact
+  // limit is checked at round level (mc-round lemma-6.8, theorem-6.9).
+  const auto points_move = [&](Node v, Node w) { return facts.points[v] != facts.points[w]; };
+  const Settling settle = settling_of(g, comps, no_node_event, points_move);
+  SpacingGap widest_gap;
+  for (Node v = 0; v < g.size(); ++v)
+    if (comps.cyclic[comps.of[v]]) {
+      SpacingGap gap = spacing_gap(c, view.lattice, facts.points[v]);
+      if (gap.distance > widest_gap.distance)
+        widest_gap = std::move(gap);
+    }
+  r.figures.emplace_back("CN points fixed from round (worst)",
+                         rounds_text(worst_over_starts(settle)));
+  r.figures.emplace_back("distance to even spacing in the limit (worst, lattice units)",
+                         mc::to_string(widest_gap.distance) +
+                             (widest_gap.where.empty() ? "" : " (" + widest_gap.where + ")"));
+  if (settle.endless)
+    r.notes.push_back("on some cycle of rounds the CNs' points keep changing: they do not "
+                      "settle (Lemma 7's limit, 002:304, is not reached on the lattice)");
+
   // (1) The assignment becomes fixed on every execution.
   if (stab.endless) {
     const auto [from, to] = *stab.endless;
@@ -247,14 +313,33 @@ checker::PropertyResult check_stabilisation(const VnConfig& c, const tioa::Autom
     return r;
   }
 
+  // (1) The fixed assignment is proportional to q within the bound: a round start beyond it
+  // from which the assignment may stay fixed for ever breaks it.
+  if (spread_at != no_node) {
+    std::vector<Node> rounds = path_from_start(g, spread_at);
+    const std::size_t at = rounds.size() - 1;
+    const auto [after, loop] =
+        cycle_from(g, spread_at, can_stay, [&](Node a, Node b) { return !moves(a, b); });
+    rounds.insert(rounds.end(), after.begin(), after.end());
+    r.verdict = checker::Verdict::violated;
+    r.trace = trace_of_rounds(gen, ex, walker, g, rounds, at + loop);
+    r.trace_role = "counterexample";
+    r.trace_kind = "lasso";
+    r.message =
+        "an execution whose assignment stays fixed from round " + std::to_string(at) +
+        " on with |y_h/q_h - y_g/q_g| = " +
+        mc::to_string(density_spread(view.counts(ex.store.state(g.state[spread_at])), q)) +
+        " over In, beyond 10(2m-1)/(q_min rho2) = " + mc::to_string(bound) +
+        " (Theorem 1(1), Lemma 6, 002:236, 298; trace: " + std::to_string(r.trace->length()) +
+        " steps)";
+    return r;
+  }
+
   // (2) From round T_stab + 2 on, C_in on Γ (002:302). Rounds since the last change of
   // zones, up to 3 ("3 or more"), along every path; a node where the assignment may stay
   // fixed for ever (an endless path of rounds without a change) and a CN is off Γ at 2 or
   // more breaks the claim.
   const Node n = g.size();
-  // An endless path of rounds without a change from here.
-  const std::vector<std::uint8_t> can_stay =
-      endless_from(g, [&](Node v, Node w) { return !moves(v, w); });
   constexpr std::uint32_t levels = 4; // rounds since the last change: 0, 1, 2, 3 or more
   std::vector<std::uint32_t> parent(std::size_t{n} * levels, no_node);
   std::vector<std::uint32_t> queue;
@@ -315,7 +400,8 @@ checker::PropertyResult check_stabilisation(const VnConfig& c, const tioa::Autom
                       "on every execution from every start state the assignment becomes fixed "
                       "(worst T_stab " +
                           rounds_text(worst_over_starts(stab)) +
-                          ") and every CN of C_in stands on Gamma from round T_stab + 2 on (" +
+                          ") within the proportionality bound of Lemma 6, and every CN of C_in "
+                          "stands on Gamma from round T_stab + 2 on (" +
                           std::to_string(g.size()) + " round starts, " +
                           std::to_string(g.next.size()) + " rounds), on all " +
                           checker::reachable_states(ex.store.size(), ex));

@@ -9,11 +9,15 @@
 //   002:302: "From line 33 of Figure 7, it follows immediately that by the beginning of
 //   round T_stab + 2, all CNs in C_in are located on the curve Γ."
 //
-// The check claims the two things the paper states with a time: (1) on every execution the
-// assignment becomes fixed (T_stab is finite), and (2) from round T_stab + 2 on, every
-// active CN in a zone with q_h ≠ 0 stands on Γ_h. The conference gives no bound on T_out or
-// T_stab (002:234, 264, 286), so their worst values are measured and set beside the
-// round-level system's from the same start counts, not judged.
+// The check claims what the paper states with a time or a bound: (1) on every execution the
+// assignment becomes fixed (T_stab is finite), within Lemma 6's proportionality bound at
+// every round start from which it may stay fixed (assignment_measures.hpp), and (2) from
+// round T_stab + 2 on, every active CN in a zone with q_h ≠ 0 stands on Γ_h. The
+// conference gives no bound on T_out or T_stab (002:234, 264, 286), so their worst values
+// are measured and set beside the round-level system's from the same start counts, not
+// judged. Lemma 7's even spacing "in the limit" is measured at the round starts on cycles
+// of rounds, not judged: the lattice rounds calctarget's points down, so a limit point can
+// stop short of its place (the exact limit is mc-round's lemma-6.8).
 
 #include <cstdint>
 #include <vector>
@@ -29,10 +33,11 @@ namespace vn_layer {
 // `unbounded` (round_graph.hpp) when the counts cycle.
 std::uint32_t round_level_t_stab(const VnConfig& config, const std::vector<int>& start_counts);
 
-// Violated with a lasso: an execution whose assignment changes for ever (1), or one whose
-// assignment stays fixed from round T on while a CN of C_in is off Γ at round T + 2 or
-// later (2). `cn_faults`: CNs fail and recover (outside the theorem's premise after t_0;
-// the check is not run: incomplete).
+// Violated with a lasso: an execution whose assignment changes for ever (1), one whose
+// assignment stays fixed beyond the proportionality bound (1), or one whose assignment
+// stays fixed from round T on while a CN of C_in is off Γ at round T + 2 or later (2).
+// `cn_faults`: CNs fail and recover (outside the theorem's premise after t_0; the check is
+// not run: incomplete).
 checker::PropertyResult check_stabilisation(const VnConfig& config, const tioa::Automaton& system,
                                             const checker::ExploreOptions& options, bool cn_faults);
 

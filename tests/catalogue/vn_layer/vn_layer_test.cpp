@@ -302,6 +302,22 @@ TEST_CASE("vn-layer stabilisation: the assignment settles and C_in is on the cur
     CHECK(vt::figure(r, "T_stab (worst)") == "2");
     CHECK(vt::figure(r, "starts where T_stab = the round-level system's") == "225 of 225");
     CHECK(vt::figure(r, "C_in on Gamma from, after T_stab (worst)") == "T_stab + 2");
+    // Lemma 6: two CNs settle in one zone of the curve or one per zone; 10·3/(2·9/10).
+    CHECK(vt::figure(r, "|y_h/q_h - y_g/q_g| from T_stab on (worst)") ==
+          "0, bound 10(2m-1)/(q_min rho2) = 50/3");
+    CHECK(vt::has_note(r, "proportionality cannot fail on this instance"));
+    // Lemma 7: two CNs of a zone stand at its two ends, evenly spaced.
+    CHECK(vt::figure(r, "distance to even spacing in the limit (worst, lattice units)") == "0");
+    CHECK(vt::figure(r, "CN points fixed from round (worst)") == "3");
+  }
+  // Three CNs in one zone of side 4: calctarget's point rounded down stops the middle CN at
+  // x = 1, where half its distance to the midpoint of its neighbours is below one unit.
+  {
+    const auto r = vt::run("stabilisation", {"rows=1", "cns=3", "b=4", "start=corner"}).result;
+    CHECK(r.verdict == checker::Verdict::holds);
+    CHECK(vt::figure(r, "distance to even spacing in the limit (worst, lattice units)") ==
+          "1 (zone 0: CNs at x = 0, 1, 4, evenly spaced at x = 0, 2, 4)");
+    CHECK(vt::figure(r, "CN points fixed from round (worst)") == "4");
   }
   // 1×2: the migration of V4 moves a CN across the border a round after the counts settle.
   {
