@@ -196,6 +196,8 @@ ModelDefinition vn_layer_definition() {
       {corner({{"delta", 12}}), "position-refinement", checker::Verdict::violated},
       {{}, "stabilisation", checker::Verdict::holds},
       {{{"rows", 1}, {"cols", 2}}, "stabilisation", checker::Verdict::holds},
+      // Three CNs in one zone of side 4: the middle one settles a unit short (Lemma 7).
+      {corner({{"rows", 1}, {"cns", 3}, {"b", 4}}), "stabilisation", checker::Verdict::holds},
       {{{"cns", 1}, {"vn_fail", ParamValue::choice("any")}},
        "stabilisation",
        checker::Verdict::violated}};
