@@ -31,13 +31,18 @@ mc::Rational density_spread(const std::vector<int>& counts,
   return mc::Rational(counts[high], q[high]) - mc::Rational(counts[low], q[low]);
 }
 
-mc::Rational proportionality_bound(const VnConfig& c) {
+mc::QuantisedLength q_min_of(const std::vector<mc::QuantisedLength>& q) {
   mc::QuantisedLength q_min = 0;
-  for (const mc::QuantisedLength length : vlayer_mc::curve_q(c.lattice()))
+  for (const mc::QuantisedLength length : q)
     if (length != 0 && (q_min == 0 || length < q_min))
       q_min = length;
+  return q_min;
+}
+
+mc::Rational proportionality_bound(const VnConfig& c) {
   const int m = std::max(c.rows, c.cols);
-  return mc::Rational(10 * (2 * m - 1)) / (mc::Rational(q_min) * c.rho2);
+  return mc::Rational(10 * (2 * m - 1)) /
+         (mc::Rational(q_min_of(vlayer_mc::curve_q(c.lattice()))) * c.rho2);
 }
 
 SpacingGap spacing_gap(const VnConfig& c, const Lattice& lattice, const std::vector<int>& points) {

@@ -33,6 +33,9 @@ namespace vn_layer {
 mc::Rational density_spread(const std::vector<int>& counts,
                             const std::vector<mc::QuantisedLength>& q);
 
+// q_min: the smallest q_h ≠ 0 (0 when every q_h is 0).
+mc::QuantisedLength q_min_of(const std::vector<mc::QuantisedLength>& q);
+
 // 10(2m−1)/(q_min ρ2) for the instance (the decisions above).
 mc::Rational proportionality_bound(const VnConfig& config);
 

@@ -257,10 +257,7 @@ checker::PropertyResult check_stabilisation(const VnConfig& c, const tioa::Autom
                          mc::to_string(widest_spread) +
                              ", bound 10(2m-1)/(q_min rho2) = " + mc::to_string(bound));
   // No density exceeds cns/q_min, so a bound at or above it cannot be broken here.
-  mc::QuantisedLength q_min = 0;
-  for (const mc::QuantisedLength length : q)
-    if (length != 0 && (q_min == 0 || length < q_min))
-      q_min = length;
+  const mc::QuantisedLength q_min = q_min_of(q);
   if (mc::Rational(c.cns, q_min) <= bound)
     r.notes.push_back("proportionality cannot fail on this instance: every y_h/q_h is at most "
                       "cns/q_min = " +
