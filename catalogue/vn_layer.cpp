@@ -5,6 +5,8 @@
 #include "catalogue/fig7_figures.hpp"
 #include "models/vn_layer/layer.hpp"
 #include "proofs/vn_layer/layer_checks.hpp"
+#include "proofs/vn_layer/round_closure.hpp"
+#include "proofs/vn_layer/round_legal_set.hpp"
 #include "proofs/vn_layer/round_refinement.hpp"
 #include "proofs/vn_layer/stabilisation.hpp"
 #include "tioa/operators.hpp"
@@ -98,7 +100,11 @@ ModelDefinition vn_layer_definition() {
                         "in a zone with q_h != 0 is on Gamma_h from round T_stab + 2 on (seed "
                         "002 §VI, lines 236, 302); worst T_out and T_stab beside the "
                         "round-level system's, and the distance to even spacing in the limit "
-                        "(Lemma 7, measured) (docs/design/vn-layer.md §5.3, check 6)"}};
+                        "(Lemma 7, measured) (docs/design/vn-layer.md §5.3, check 6)"},
+      {"round-closure", "L_round (ours: the CNs on their targets, the VNs idle and VLBcast empty "
+                        "at a round start) is reached at time delta from the start states, "
+                        "closed from round start to round start, and free of time-locks "
+                        "(docs/design/vn-layer.md §5.3, check 4)"}};
   d.check_params = [](const ParamValues& p) -> std::optional<std::string> {
     if (p.at("nbh") != 4 && p.at("nbh") != 8)
       return "nbh must be 4 or 8, not " + p.at("nbh").text();
@@ -154,8 +160,24 @@ ModelDefinition vn_layer_definition() {
                         [=, cn_faults = p.at("cn_faults") == 1](const checker::ExploreOptions& o) {
                           return vn_layer::check_stabilisation(c, system, o, cn_faults);
                         })};
+    checker::Property closure = custom_property(
+        "round-closure", "L_round reached at delta, closed by rounds, without time-locks",
+        [=, cn_faults = p.at("cn_faults") == 1](const checker::ExploreOptions& o) {
+          return vn_layer::check_round_closure(c, layer, system, o, cn_faults);
+        });
+    const auto legal = std::make_shared<const vn_layer::RoundLegalSet>(layer, c);
+    closure.predicate = [legal](const tioa::State& s) { return legal->contains(s.words()); };
+    closure.predicate_name = "L_round";
+    m.properties.push_back(std::move(closure));
     for (checker::Property& property : m.properties)
       property = counting_fig7(std::move(property), c.branch_tally);
+    // The traces of round-closure's (b) and (c) start in L_round.
+    m.trace_systems.emplace(vn_layer::l_round_system_name,
+                            TraceSystem{vn_layer::l_round_layer(layer, c),
+                                        "L_round (proofs/vn_layer/round_legal_set.hpp)",
+                                        [legal](const tioa::Word* state) -> std::optional<bool> {
+                                          return legal->contains(state);
+                                        }});
     return m;
   };
   // 2×1 with 2 CNs at every placement (a second each); then from the corner, what breaks:
@@ -200,7 +222,13 @@ ModelDefinition vn_layer_definition() {
       {corner({{"rows", 1}, {"cns", 3}, {"b", 4}}), "stabilisation", checker::Verdict::holds},
       {{{"cns", 1}, {"vn_fail", ParamValue::choice("any")}},
        "stabilisation",
-       checker::Verdict::violated}};
+       checker::Verdict::violated},
+      // L_round (ours) is reached at delta, closed from round start to round start and free
+      // of time-locks when delta meets the lattice's rule, also across V4's migration on
+      // 1x2; at delta = 12 a CN reaches a zone whose VN restarts only after the round start.
+      {{}, "round-closure", checker::Verdict::holds},
+      {{{"rows", 1}, {"cols", 2}}, "round-closure", checker::Verdict::holds},
+      {corner({{"delta", 12}}), "round-closure", checker::Verdict::violated}};
   return d;
 }
 

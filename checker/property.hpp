@@ -18,7 +18,8 @@ struct Property {
   std::string description;
   PropertyKind kind = PropertyKind::invariant;
   // The invariant, the legal set L (L2 for transitivity), or for a deadlock check the states
-  // that are proper ends (check_no_deadlock's `ended`; empty: none).
+  // that are proper ends (check_no_deadlock's `ended`; empty: none). A custom check may
+  // name the set its traces are about (`replay` evaluates them on it).
   StatePredicate predicate;
   std::string predicate_name;
   StatePredicate first; // transitivity: the intermediate legal set L1

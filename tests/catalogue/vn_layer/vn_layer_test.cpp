@@ -344,3 +344,42 @@ TEST_CASE("vn-layer stabilisation: the assignment settles and C_in is on the cur
   CHECK(faults.verdict == checker::Verdict::incomplete);
   CHECK_THAT(faults.message, Catch::Contains("not checked: Theorem 1 assumes"));
 }
+
+TEST_CASE("vn-layer round-closure: L_round is reached at delta, closed from round to round and "
+          "free of time-locks on 2x1; delta = 12 leaves it",
+          "[vn-layer]") {
+  const auto r = vt::run("round-closure", {}).result;
+  CHECK(r.verdict == checker::Verdict::holds);
+  CHECK(r.states == 113'948);
+  CHECK(vt::figure(r, "(a) states of round 0") == "48366");
+  CHECK(vt::figure(r, "(a) round starts at time delta") == "900");
+  CHECK(vt::figure(r, "(b) L_round classes") == "3600"); // (2 x 15)^2 CNs x 2^2 zones
+  CHECK(r.coverage.starts == checker::Starts::all);
+  CHECK(r.coverage.count == 3600);
+
+  // V1: the CN reaches a zone whose VN has not restarted by the round start (d_r).
+  const auto v = vt::run("round-closure", {"start=corner", "delta=12"}).result;
+  CHECK(v.verdict == checker::Verdict::violated);
+  CHECK(v.message.find("(b) a round from an L_round state ends outside L_round (R2: CN_0 is "
+                       "in zone 0, whose VN is failed)") != std::string::npos);
+  REQUIRE(v.trace);
+  REQUIRE(v.trace_system);
+  CHECK(v.trace_system_name == "L_round");
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(*v.trace_system), *v.trace, &why));
+  INFO(why);
+  REQUIRE(v.trace_in_legal_set.size() == v.trace->steps.size());
+  CHECK(v.trace_in_legal_set.front());
+  CHECK_FALSE(v.trace_in_legal_set.back());
+
+  // (a): a VN that may fail with its CN present can be failed at time delta.
+  const auto a = vt::run("round-closure", {"cns=1", "vn_fail=any", "start=corner"});
+  CHECK(a.result.verdict == checker::Verdict::violated);
+  CHECK(a.result.message.find("(a) the round start at time 13 is outside L_round (R2") !=
+        std::string::npos);
+  REQUIRE(a.result.trace);
+  CHECK(checker::replay(tioa::SuccessorGenerator(a.system), *a.result.trace, &why));
+
+  CHECK(vt::run("round-closure", {"start=corner", "cn_faults=1"}).result.verdict ==
+        checker::Verdict::incomplete);
+}
