@@ -192,6 +192,9 @@ TEST_CASE("L_round classes: states with contents of earlier rounds reach the rou
           variants.insert(variants.end(), s.begin(), s.end());
         }
   }
+  // 27 representatives with VN_0 alive take 10 entries x 2 tags x 2 ages, the 9 with it
+  // failed (and so in its initial state) 2 tags x 2 ages.
+  CHECK(variants.size() == (27 * 40 + 9 * 4) * legal.words());
   bool representatives_legal = false, variants_legal = false;
   const auto from_representatives =
       round_starts_reached(layer, c, legal, representatives, representatives_legal);
