@@ -9,6 +9,7 @@
 
 #include "checker/explorer.hpp"
 #include "checker/trace.hpp"
+#include "models/vn_layer/round_tags.hpp"
 #include "proofs/vn_layer/layer_checks.hpp"
 #include "proofs/vn_layer/round_legal_set.hpp"
 #include "proofs/vn_layer/round_starts.hpp"
@@ -149,6 +150,10 @@ checker::PropertyResult check_round_closure(const VnConfig& c, const tioa::Autom
     if (view.round_begins(s) && legal.contains(s))
       legal.canonicalise(s);
   };
+  // A representative and its round say round 1; a round start outside L_round says a
+  // later one (it is not canonicalised) and ends the search there.
+  const auto epoch = tioa::find_variable<int>(*start, "VLBcast.epoch");
+  hooks.expand = [&](const tioa::Word* s) { return tioa::State(s, 0)[epoch] == last_round; };
   const tioa::StartSet classes =
       tioa::StartSet::listed(layer.layout().bits(), layer.words(), legal.representatives(),
                              "L_round, one state per class (proofs/vn_layer/round_legal_set.hpp)");

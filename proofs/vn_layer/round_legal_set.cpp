@@ -190,7 +190,7 @@ bool RoundLegalSet::first_broken(const Word* state, std::string* why) const {
 void RoundLegalSet::canonicalise(Word* state) const {
   State s(state, 0);
   for (const Cn& cn : cns_) {
-    s[cn.epoch] = older_round;
+    s[cn.epoch] = last_round;
     s[cn.late_target_update] = false;
     if (s[cn.failed])
       for (const auto& internal : {cn.target, cn.round, cn.next_exch, cn.next_target})
@@ -199,13 +199,13 @@ void RoundLegalSet::canonicalise(Word* state) const {
   for (const Vn& vn : vns_) {
     for (std::size_t j = 0; j < vn.to_init.size(); ++j)
       s.set_code(vn.to_init[j], vn.init_codes[j]);
-    s[vn.epoch] = older_round;
-    s[vn.vn_done] = older_round;
-    s[vn.target_done] = older_round;
+    s[vn.epoch] = last_round;
+    s[vn.vn_done] = last_round; // what a reset writes in round 1 (round_zero)
+    s[vn.target_done] = last_round;
     for (const auto& tag : vn.V_round)
-      s[tag] = older_round;
+      s[tag] = last_round;
   }
-  s[bcast_epoch_] = older_round;
+  s[bcast_epoch_] = last_round;
   for (std::size_t j = 0; j < bcast_contents_.size(); ++j)
     s.set_code(bcast_contents_[j], bcast_empty_[j]);
 }

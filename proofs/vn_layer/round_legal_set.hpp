@@ -55,7 +55,9 @@ public:
   std::optional<std::string> broken(const tioa::Word* state) const;
 
   // Replaces the values the classes ignore by their representative's (an L_round state
-  // stays one; a state outside L_round must not be given).
+  // stays one; a state outside L_round must not be given). A representative's copies of
+  // realtime say round 1 (`last_round` as the age of round 0), so the round starts its
+  // round leads to, which say round 2 or later, differ from it until canonicalised.
   void canonicalise(tioa::Word* state) const;
 
   // A VN that may have counted M's entries of earlier rounds (see above): alive, with

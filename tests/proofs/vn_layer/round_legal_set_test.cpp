@@ -138,7 +138,7 @@ TEST_CASE("L_round: contents of earlier rounds are canonicalised, and a target c
   state[var<int>(layer, "VN_0.M_round[1]")] = vn_layer::last_round;
   state[var<int>(layer, "VN_0.V_num[0]")] = 2;
   state[var<int>(layer, "VN_0.V_round[0]")] = vn_layer::last_round;
-  state[var<int>(layer, "VN_0.epoch")] = vn_layer::last_round;
+  state[var<int>(layer, "VN_0.epoch")] = vn_layer::older_round;
   state[var<bool>(layer, "VN_0.late_cn_update")] = true;
   state[var<int>(layer, "VLBcast.cn_update_loc[0]")] = 5; // an empty place's last message
   REQUIRE(legal.contains(s.data()));
