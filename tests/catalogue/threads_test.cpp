@@ -55,3 +55,25 @@ TEST_CASE("vlayer-mc: the same results for 1, 2 and 4 threads", "[catalogue][vla
   same_for_every_thread_count("vlayer-mc", {}, {"lmc-closure"});
   same_for_every_thread_count("vlayer-mc", {"cols=3"}, {"no-timelock", "l1mc-closure"});
 }
+
+TEST_CASE("mc-round: the same results for 1, 2 and 4 threads", "[catalogue][mc_round][threads]") {
+  same_for_every_thread_count("mc-round", {"m=3", "n=2"}, {"fixpoint"}); // 3^9 configurations
+}
+
+TEST_CASE("vn-layer: the same results for 1, 2 and 4 threads", "[catalogue][vn_layer][threads]") {
+  // 2x1 from every placement (105,854 states; round-closure's rounds 113,948), and from the
+  // corner with delta = 12, where round-timing and round-closure find V1 with a trace.
+  same_for_every_thread_count("vn-layer", {}, {"round-timing", "stabilisation", "round-closure"});
+  same_for_every_thread_count("vn-layer", {"start=corner", "delta=12"},
+                              {"round-timing", "round-closure"});
+}
+
+TEST_CASE("vn-emulation: the same results for 1, 2 and 4 threads",
+          "[catalogue][vn_emulation][threads]") {
+  // One zone, the defaults (120,790 states); F1's time-lock; two zones where VN -> VN is lost.
+  same_for_every_thread_count("vn-emulation", {}, {"replica-consistency"});
+  same_for_every_thread_count(
+      "vn-emulation", {"start=cold", "messages=0", "fails=0", "restart=printed"}, {"no-timelock"});
+  same_for_every_thread_count("vn-emulation", {"zones=2", "fails=0", "moves=0", "rp2=9"},
+                              {"theorem-2"});
+}
