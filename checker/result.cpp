@@ -1,6 +1,8 @@
 #include "checker/result.hpp"
 
 #include <cstdio>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 #include "checker/checks.hpp"
@@ -71,7 +73,31 @@ PropertyResult result_of(const std::string& kind, const Exploration& ex,
   // An exploration covers every state reachable from its start set; a check that explores
   // from a part of what its statement quantifies over says so itself.
   r.coverage = {Starts::all, ex.start_states, ex.start_states, "the start states", ""};
+  note_open_inputs(generator.automaton(), r);
   return r;
+}
+
+void note_open_inputs(const tioa::Automaton& automaton, PropertyResult& r) {
+  for (std::size_t a = 0; a < automaton.actions().size(); ++a) {
+    const tioa::ActionSignature& sig = automaton.actions()[a];
+    if (sig.kind != tioa::ActionKind::input || !automaton.transitions()[a].bindings.empty())
+      continue;
+    double points = 1;
+    for (const tioa::ParamRange& range : sig.params)
+      points *= static_cast<double>(range.hi - range.lo + 1);
+    if (points < open_input_points)
+      continue;
+    std::ostringstream text;
+    text << "input '" << sig.name << "' is open (no component outputs all of it), so every "
+         << "state tries each of the ";
+    if (points < 1e15)
+      text << static_cast<std::uint64_t>(points);
+    else
+      text << std::setprecision(3) << points;
+    text << " points of its parameter box: an environment component that outputs it, or "
+            "smaller ranges, make the search faster";
+    r.notes.push_back(text.str());
+  }
 }
 
 std::string reachable_states(std::uint64_t count, const Exploration& ex) {

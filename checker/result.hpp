@@ -90,6 +90,12 @@ struct PropertyResult {
 PropertyResult result_of(const std::string& kind, const Exploration& ex,
                          const tioa::SuccessorGenerator& generator);
 
+// An input of the system that no component outputs (tioa/compose.cpp keeps the points no
+// output covers) is tried at every point of its box in every state. Adds a note for each
+// with at least `open_input_points` points and no parameter bound to the state.
+inline constexpr double open_input_points = 1e4;
+void note_open_inputs(const tioa::Automaton& automaton, PropertyResult& result);
+
 // "N reachable states", or, when zero-time steps were reduced, "the N reachable states of
 // the reduced graph": a reduced search visits only some of the reachable states.
 std::string reachable_states(std::uint64_t count, const Exploration& ex);

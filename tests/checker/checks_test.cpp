@@ -763,3 +763,28 @@ TEST_CASE("run_property: the time limit is one deadline for all of a property's 
   // The second search met the deadline at its first check: far fewer states than the first.
   CHECK(parts[1].states * 4 < parts[0].states);
 }
+
+TEST_CASE("a check notes an input the system leaves open over a large box", "[checker]") {
+  // 200 x 200 points of `go` in every state: noted; 50 x 50 is below the threshold, and a
+  // system whose component outputs the input has none left.
+  const auto receiver = [](int top) {
+    tioa::Automaton a("in");
+    const auto done = a.boolean("done", false);
+    a.input("go", {{"x", 0, top}, {"y", 0, top}}).eff([=](State& s, const tioa::Params&) {
+      s[done] = true;
+    });
+    return a;
+  };
+  const auto noted = [](const PropertyResult& r) {
+    return std::any_of(r.notes.begin(), r.notes.end(), [](const std::string& note) {
+      return note.find("input 'go' is open") != std::string::npos &&
+             note.find("40000 points") != std::string::npos;
+    });
+  };
+  CHECK(noted(check_no_deadlock(receiver(199), {})));
+  CHECK_FALSE(noted(check_no_deadlock(receiver(49), {})));
+  tioa::Automaton sender("out");
+  sender.output("go", {{"x", 0, 199}, {"y", 0, 199}});
+  const tioa::Automaton closed = tioa::compose("sys", {sender, receiver(199)});
+  CHECK(check_no_deadlock(closed, {}).notes.empty());
+}
