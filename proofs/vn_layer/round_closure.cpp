@@ -131,7 +131,6 @@ checker::PropertyResult check_round_closure(const VnConfig& c, const tioa::Autom
   }
   checker::require_exact_store(options, "round-closure");
   const RoundLegalSet legal(layer, c);
-  std::vector<std::pair<std::string, std::string>> figures;
 
   // (a)
   checker::PropertyResult first;
@@ -190,6 +189,14 @@ checker::PropertyResult check_round_closure(const VnConfig& c, const tioa::Autom
     r.trace_kind = kind;
     mark_trace(r, legal);
   };
+  for (StateId v = 0; v < ex.store.size(); ++v) // the model's bound first: past it, no verdict
+    if (legal.overflowed(ex.store.state(v))) {
+      set_trace(v, "overflow");
+      r.verdict = Verdict::incomplete;
+      r.message = "a send found the model's places taken (overflow), so the rounds explored "
+                  "are not the layer's; trace to the first such state";
+      return r;
+    }
   std::uint64_t later_starts = 0;
   for (StateId v = 0; v < ex.store.size(); ++v) {
     if (!walker.is_later_start(v))
@@ -213,13 +220,6 @@ checker::PropertyResult check_round_closure(const VnConfig& c, const tioa::Autom
     return r;
   }
   for (StateId v = 0; v < ex.store.size(); ++v) {
-    if (legal.overflowed(ex.store.state(v))) {
-      set_trace(v, "overflow");
-      r.verdict = Verdict::incomplete;
-      r.message = "a send found the model's places taken (overflow), so the rounds explored "
-                  "are not the layer's; trace to the first such state";
-      return r;
-    }
     if (const auto h = legal.stale_reader(ex.store.state(v))) {
       set_trace(v, "stale-read");
       r.trace_role = "witness";
