@@ -108,9 +108,11 @@ std::optional<std::string> RoundLegalSet::broken(const Word* state) const {
 
 bool RoundLegalSet::first_broken(const Word* state, std::string* why) const {
   const State s(state, 0);
-  const auto fail = [&](const std::string& text) {
+  // The clause's text is built only when asked for: the search calls this on every state at
+  // a round's first instant, and most of them break R1.
+  const auto fail = [&](const auto& text) {
     if (why)
-      *why = text;
+      *why = text();
     return true;
   };
   const int n = config_.cns, regions = lattice_.regions();
@@ -121,69 +123,97 @@ bool RoundLegalSet::first_broken(const Word* state, std::string* why) const {
   for (int i = 0; i < n; ++i)
     if (!round_start(cns_[static_cast<std::size_t>(i)].phase,
                      cns_[static_cast<std::size_t>(i)].epoch))
-      return fail("R5: " + names::cn_name(i) + "'s realtime is not a round start k*delta, k >= 1");
+      return fail([&] {
+        return std::string("R5: " + names::cn_name(i) +
+                           "'s realtime is not a round start k*delta, k >= 1");
+      });
   for (RegionId h = 0; h < regions; ++h)
     if (!round_start(vns_[static_cast<std::size_t>(h)].phase,
                      vns_[static_cast<std::size_t>(h)].epoch))
-      return fail("R5: " + names::vn_name(h) + "'s realtime is not a round start k*delta, k >= 1");
+      return fail([&] {
+        return std::string("R5: " + names::vn_name(h) +
+                           "'s realtime is not a round start k*delta, k >= 1");
+      });
   if (!round_start(bcast_phase_, bcast_epoch_))
-    return fail("R5: VLBcast's realtime is not a round start k*delta, k >= 1");
+    return fail(
+        [&] { return std::string("R5: VLBcast's realtime is not a round start k*delta, k >= 1"); });
   // (R5) the copies agree; (R1) the active CNs; (R2) their VNs.
-  std::vector<std::uint8_t> occupied(static_cast<std::size_t>(regions), 0);
+  std::uint64_t occupied = 0; // a bit per zone (at most 16: rows, cols <= 4)
   for (int i = 0; i < n; ++i) {
     const Cn& cn = cns_[static_cast<std::size_t>(i)];
-    const std::string name = names::cn_name(i);
+    const auto name = [i] { return names::cn_name(i); };
     const bool active = !s[cn.failed];
     if (s[active_[static_cast<std::size_t>(i)]] != active)
-      return fail("R5: Zones' record of whether " + name + " is active is wrong");
+      return fail([&] {
+        return std::string("R5: Zones' record of whether " + name() + " is active is wrong");
+      });
     const RegionId zone = lattice_.region_of(s[cn.x]);
     const int announced = s[cn.zone];
     if (announced != s[zone_of_[static_cast<std::size_t>(i)]])
-      return fail("R5: " + name + "'s record of its zone and Zones' differ");
+      return fail(
+          [&] { return std::string("R5: " + name() + "'s record of its zone and Zones' differ"); });
     // A CN that crosses a border at the tick of the round start announces it (enter_i) by
     // a zero-time step after the round start: outside L_round (models/vn_layer/README.md).
     if (announced != zone)
-      return fail("R5: " + name + " has crossed into zone " + std::to_string(zone) +
-                  " at this instant and not yet announced it (enter_" + std::to_string(i) +
-                  " follows the tick)");
+      return fail([&] {
+        return std::string("R5: " + name() + " has crossed into zone " + std::to_string(zone) +
+                           " at this instant and not yet announced it (enter_" + std::to_string(i) +
+                           " follows the tick)");
+      });
     if (!active)
       continue;
-    occupied[static_cast<std::size_t>(zone)] = 1;
+    occupied |= std::uint64_t{1} << zone;
     for (const auto& counter : {cn.round, cn.next_exch, cn.next_target})
       if (s.is_bottom(counter) || s[counter] != this_round)
-        return fail("R1: " + name + "'s round counters are not all this round's");
+        return fail([&] {
+          return std::string("R1: " + name() + "'s round counters are not all this round's");
+        });
     if (s.is_bottom(cn.target))
-      return fail("R1: " + name + " has no target");
+      return fail([&] { return std::string("R1: " + name() + " has no target"); });
     if (s[cn.x] != s[cn.target])
-      return fail("R1: " + name + " is not on its target: x = " + std::to_string(s[cn.x]) +
-                  ", x* = " + std::to_string(s[cn.target]));
+      return fail([&] {
+        return std::string("R1: " + name() + " is not on its target: x = " +
+                           std::to_string(s[cn.x]) + ", x* = " + std::to_string(s[cn.target]));
+      });
     if (s[vns_[static_cast<std::size_t>(zone)].failed])
-      return fail("R2: " + name + " is in zone " + std::to_string(zone) + ", whose VN is failed");
+      return fail([&] {
+        return std::string("R2: " + name() + " is in zone " + std::to_string(zone) +
+                           ", whose VN is failed");
+      });
   }
   for (RegionId h = 0; h < regions; ++h) {
     const Vn& vn = vns_[static_cast<std::size_t>(h)];
-    const std::string name = names::vn_name(h);
+    const auto name = [h] { return names::vn_name(h); };
     if (s[vn_failed_[static_cast<std::size_t>(h)]] != s[vn.failed])
-      return fail("R5: Zones' record of whether " + name + " is failed is wrong");
-    if (!occupied[static_cast<std::size_t>(h)] &&
-        s[occupied_for_[static_cast<std::size_t>(h)]] != 0)
-      return fail("R5: zone " + std::to_string(h) + " holds no active CN but counts occupancy");
+      return fail([&] {
+        return std::string("R5: Zones' record of whether " + name() + " is failed is wrong");
+      });
+    if (!(occupied >> h & 1) && s[occupied_for_[static_cast<std::size_t>(h)]] != 0)
+      return fail([&] {
+        return std::string("R5: zone " + std::to_string(h) +
+                           " holds no active CN but counts occupancy");
+      });
     for (const tioa::Slot& place : vn.buffer)
       if (s.code(place) != 0) // Buffered::none
-        return fail("R3: " + name + "'s send-buffer is not empty");
+        return fail([&] { return std::string("R3: " + name() + "'s send-buffer is not empty"); });
     if (s[vn.vn_done] == this_round || s[vn.target_done] == this_round)
-      return fail("R3: " + name + " has handled a trigger of this round");
+      return fail(
+          [&] { return std::string("R3: " + name() + " has handled a trigger of this round"); });
     for (std::size_t i = 0; i < vn.M.size(); ++i)
       if (!s.is_bottom(vn.M[i]) && s[vn.M_round[i]] == this_round)
-        return fail("R3: " + name + "'s M holds an entry of this round");
+        return fail(
+            [&] { return std::string("R3: " + name() + "'s M holds an entry of this round"); });
     for (const auto& tag : vn.V_round)
       if (s[tag] == this_round)
-        return fail("R3: " + name + "'s V holds an entry of this round");
+        return fail(
+            [&] { return std::string("R3: " + name() + "'s V holds an entry of this round"); });
   }
   // (R4)
   for (const tioa::Slot& place : bcast_in_flight_)
     if (s.code(place) != 0)
-      return fail("R4: VLBcast holds a message (" + std::string(place.name) + ")");
+      return fail([&] {
+        return std::string("R4: VLBcast holds a message (" + std::string(place.name) + ")");
+      });
   return false;
 }
 
