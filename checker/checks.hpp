@@ -48,7 +48,7 @@ PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& 
 // check_invariant and check_no_deadlock run on either store (ExploreOptions::store); on the
 // fingerprint store a run that finds nothing is incomplete ("holds up to hash collisions").
 // The other checks read the states or edges after the search and throw this when asked
-// for the fingerprint store: std::invalid_argument naming `check`.
+// for the fingerprint or compressed store: std::invalid_argument naming `check`.
 void require_exact_store(const ExploreOptions& options, const std::string& check);
 
 } // namespace checker

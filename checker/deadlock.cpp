@@ -31,10 +31,11 @@ PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& 
       break;
     }
     // The fingerprint store keeps no states: the trace to it rebuilds the state.
+    std::vector<Word> buffer; // (decoded on the compressed store)
     const std::vector<Word> state =
         ex.fingerprints()
             ? trace_to(generator, ex, id).steps.back().state
-            : std::vector<Word>(ex.store.state(id), ex.store.state(id) + generator.words());
+            : std::vector<Word>(ex.state(id, buffer), ex.state(id, buffer) + generator.words());
     if (!ended(tioa::State(state.data(), 0)))
       stuck.push_back(id);
   }

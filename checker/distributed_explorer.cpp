@@ -341,6 +341,9 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
     out.stop = StopReason::state_limit;
     return out;
   }
+  if (options.store == StoreKind::compressed)
+    throw std::invalid_argument("the compressed store does not run distributed yet: use the "
+                                "exact or the fingerprint store under mpirun");
   const bool fingerprints = options.store == StoreKind::fingerprint;
   out.fingerprints = fingerprints;
   RankStates rs(words, threads, fingerprints);

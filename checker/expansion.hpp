@@ -5,7 +5,9 @@
 // (growth_gate.hpp). Each new state keeps the step that found it first (discovery.hpp), so
 // that level_end.hpp can number the level as a sequential search would. On the
 // fingerprint store the frontier's states and the new ones are in level_states.hpp, and the
-// store is asked about fingerprints (insertion.hpp's store_key()).
+// store is asked about fingerprints (insertion.hpp's store_key()). On the compressed store
+// the frontier's states are decoded from the tree and the store is asked about each
+// successor's key in it (state_tree.hpp), made as the successor is inserted.
 
 #include <algorithm>
 #include <atomic>
@@ -13,6 +15,7 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <optional>
 #include <span>
 #include <thread>
 #include <vector>
@@ -54,6 +57,7 @@ struct Level {
   const ZeroTimeReduction* reduction; // null: every successor
   LevelStates* states;              // the fingerprint store's two levels (nullptr: the exact store)
   bool stop_at_state_limit = false; // ExploreOptions::stop_at_state_limit
+  StateTree* tree = nullptr;        // the compressed store's parts (nullptr: another store)
 
   bool concurrent() const { return workers > 1; }
   // The ids a worker takes at a time (see StateStore::IdBlock): one when it is alone, so
@@ -61,8 +65,13 @@ struct Level {
   std::uint32_t id_block() const { return concurrent() ? id_block_size : 1; }
   // The first id of the level being built.
   StateId first_new() const { return discovery.first(); }
-  // A state of the frontier (on the fingerprint store unpacked into `scratch`, words()).
+  // A state of the frontier (on the fingerprint store unpacked, on the compressed store
+  // decoded, into `scratch`, words()).
   const Word* frontier(StateId id, Word* scratch) const {
+    if (tree) {
+      tree->decode(store.state(id)[0], scratch);
+      return scratch;
+    }
     return states ? states->frontier(id, scratch) : store.state(id);
   }
 };
@@ -179,10 +188,11 @@ private:
   StateBuffer pending_states; // successors of the batch being expanded
   std::vector<Pending> pending;
   std::vector<Expanded> batch;
-  std::uint64_t checks = 0;         // made by keep_going()
-  std::vector<Word> scratch;        // the successor generator's
-  std::vector<Word> representative; // a successor's (the canonical hook)
-  std::vector<Word> unpacked;       // a frontier state (the fingerprint store)
+  std::uint64_t checks = 0;            // made by keep_going()
+  std::vector<Word> scratch;           // the successor generator's
+  std::vector<Word> representative;    // a successor's (the canonical hook)
+  std::vector<Word> unpacked;          // a frontier state (the fingerprint and compressed stores)
+  std::vector<std::uint32_t> tree_ids; // the compressed store's (StateTree::insert())
 };
 
 template <class Hooks>
@@ -191,16 +201,29 @@ bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::u
   const Word* succ = pending_states[index];
   const Pending& p = pending[index];
   const Word* key_words = level.states ? &p.fingerprint : succ;
+  std::uint64_t hash = p.hash;
+  Word tree_key = 0; // the compressed store's key of succ
   const std::uint64_t key = Discovery::key(from, step);
   StateId to = 0;
   bool fresh = false;
   for (;;) {
     if (!level.gate.checkpoint())
       return false;
+    if (level.tree) {
+      tree_ids.resize(level.tree->scratch_size());
+      const std::optional<Word> made = level.tree->insert(succ, tree_ids.data());
+      if (!made) { // a table of parts is out of room
+        level.gate.request();
+        continue;
+      }
+      tree_key = *made;
+      key_words = &tree_key;
+      hash = hash_state(&tree_key, 1);
+    }
     if (level.max_states && level.store.size() >= level.max_states) {
       // At the state limit only stored states are found; a new one ends the run, and the
       // level goes on for the counts (unless the run stops at once: Level::stop_at_state_limit).
-      const auto known = level.store.find(key_words, p.hash);
+      const auto known = level.store.find(key_words, hash);
       if (!known) {
         level.signals.state_limit = true;
         if (!level.stop_at_state_limit)
@@ -212,7 +235,7 @@ bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::u
       break;
     }
     const StateStore::Claim claim =
-        level.store.find_or_insert(key_words, p.hash, ids, [&](StateId id, std::uint32_t slot) {
+        level.store.find_or_insert(key_words, hash, ids, [&](StateId id, std::uint32_t slot) {
           if (level.states)
             level.states->put(id, succ, writer);
           if (id + ids.size == ids.end) // a new block: its other ids are holes until taken
@@ -274,8 +297,9 @@ bool Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
         batch.push_back({id, static_cast<std::uint32_t>(first),
                          static_cast<std::uint32_t>(pending.size() - first)});
       }
-      for (const Pending& p : pending)
-        level.store.prefetch_state(p.hash);
+      if (!level.tree) // (the compressed store's keys are made at the insertion)
+        for (const Pending& p : pending)
+          level.store.prefetch_state(p.hash);
       for (const Expanded& e : batch) {
         // Edges pile up in the level buffers, which grow only within this worker's share
         // of the memory left.
@@ -308,10 +332,14 @@ void Worker::generate(const Hooks& hooks, const Level& level, const Word* state,
       canonicalise(hooks, representative.data());
       succ = representative.data();
     }
+    pending_states.push(succ);
+    if (level.tree) {
+      pending.push_back({0, 0, duration});
+      return;
+    }
     std::uint64_t fingerprint_of = 0;
     const StoreKey key = store_key(succ, words, level.states != nullptr, fingerprint_of);
     level.store.prefetch(key.hash);
-    pending_states.push(succ);
     pending.push_back({key.hash, fingerprint_of, duration});
   };
   const std::optional<std::size_t> reduced =

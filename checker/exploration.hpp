@@ -6,8 +6,12 @@
 // (store.words() is 1), not the states: only trace_to() (trace.hpp) may rebuild states,
 // from the start set kept here, and the full states of the first target and of the
 // first stuck state are kept.
+//
+// On the compressed store (state_tree.hpp) `store` holds one key per state too, and `tree`
+// the parts the keys name: state() decodes a state from them (exact).
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -15,6 +19,7 @@
 #include "checker/mapped_memory.hpp"
 #include "checker/options.hpp"
 #include "checker/state_store.hpp"
+#include "checker/state_tree.hpp"
 #include "tioa/start_set.hpp"
 
 namespace checker {
@@ -37,11 +42,16 @@ inline std::uint32_t edge_to(StateId to, std::uint32_t duration) {
 
 struct Exploration {
   explicit Exploration(std::uint32_t words, StoreKind kind = StoreKind::exact)
-      : store(kind == StoreKind::fingerprint ? 1 : words), state_words(words), store_kind(kind) {}
+      : store(kind == StoreKind::exact ? words : 1), state_words(words), store_kind(kind) {
+    if (kind == StoreKind::compressed && words > 1) // (one word is its own key)
+      tree = std::make_shared<StateTree>(words);
+  }
 
   StateStore store;
   std::uint32_t state_words; // of a state (store.words() is 1 on the fingerprint store)
   StoreKind store_kind;
+  // The compressed store's parts (shared by copies of the exploration, which read it only).
+  std::shared_ptr<StateTree> tree;
   MappedVector<StateId> parent; // no_parent for start states
   std::uint64_t start_states = 0;
   std::uint64_t edges = 0;
@@ -71,11 +81,17 @@ struct Exploration {
   std::vector<Word> found_state, first_stuck_state;
 
   bool fingerprints() const { return store_kind == StoreKind::fingerprint; }
+  bool compressed() const { return store_kind == StoreKind::compressed; }
+
+  // The state `id` (state_words words): in the store, or on the compressed store decoded
+  // into `buffer`. Not on the fingerprint store, which keeps no states (trace.hpp).
+  const Word* state(StateId id, std::vector<Word>& buffer) const;
 
   bool complete() const { return stop == StopReason::finished || stop == StopReason::found; }
   std::size_t memory_bytes() const {
-    return store.memory_bytes() + parent.capacity() * sizeof(StateId) +
-           stuck.capacity() * sizeof(StateId) + edge_offsets.capacity() * sizeof(std::uint64_t) +
+    return store.memory_bytes() + (tree ? tree->memory_bytes() : 0) +
+           parent.capacity() * sizeof(StateId) + stuck.capacity() * sizeof(StateId) +
+           edge_offsets.capacity() * sizeof(std::uint64_t) +
            edge_targets.capacity() * sizeof(std::uint32_t);
   }
   // The steps recorded from `v` (edge_to() form).

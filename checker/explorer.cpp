@@ -1,5 +1,7 @@
 #include "checker/explorer.hpp"
 
+#include <stdexcept>
+
 namespace checker {
 
 const char* describe(StopReason reason) {
@@ -19,8 +21,25 @@ const char* describe(StopReason reason) {
   }
 }
 
+const Word* Exploration::state(StateId id, std::vector<Word>& buffer) const {
+  if (fingerprints())
+    throw std::logic_error("the fingerprint store keeps no states");
+  if (!tree)
+    return store.state(id);
+  buffer.resize(state_words);
+  tree->decode(store.state(id)[0], buffer.data());
+  return buffer.data();
+}
+
 const char* to_string(StoreKind kind) {
-  return kind == StoreKind::fingerprint ? "fingerprint" : "exact";
+  switch (kind) {
+  case StoreKind::fingerprint:
+    return "fingerprint";
+  case StoreKind::compressed:
+    return "compressed";
+  default:
+    return "exact";
+  }
 }
 
 template Exploration explore<NoHooks>(const tioa::SuccessorGenerator&, const tioa::StartSet&,

@@ -59,6 +59,8 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   LevelStates* const states = fingerprints ? &level_states : nullptr;
   ex.threads = options.threads == 0 ? 1 : options.threads;
   ex.store.set_inserters(ex.threads, id_block_size);
+  if (ex.tree)
+    ex.tree->set_inserters(ex.threads);
   Progress progress(options.progress, options.task.empty() ? "exploring" : options.task);
   std::vector<Worker> workers(ex.threads, Worker(generator.words()));
   for (std::size_t w = 0; w < workers.size(); ++w)
@@ -103,10 +105,26 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
       });
 
   // The store grows by an eighth at a time (and the discovery keys with it), while the
-  // workers wait at the gate.
+  // workers wait at the gate; so do the compressed store's tables of parts, when they ask.
   // A worker alone writes the parents as it inserts: room for as many as the store.
   auto parents_room = [&] { return ex.store.id_limit() - ex.parent.size(); };
+  auto reshare = [&] {
+    // What the store took is no longer left for the workers' own buffers: each gets an
+    // equal share of what is left now.
+    const std::size_t share = budget.share_left(budget.held(), active_workers);
+    for (std::size_t w = 0; w < active_workers; ++w)
+      workers[w].allowance.reshare(workers[w].own_bytes(states), share);
+  };
   auto grow_store = [&] {
+    if (ex.tree && ex.tree->needs_room()) {
+      if (!budget.fits(ex.tree->room_bytes()))
+        return false;
+      ex.tree->make_room();
+      if (ex.store.size() < ex.store.room()) { // the keys' table has room
+        reshare();
+        return true;
+      }
+    }
     const std::uint64_t more = std::max<std::uint64_t>(ex.store.size() / 8, 4096);
     if (!budget.fits(ex.store.room_bytes(more) +
                      ex.parent.growth_bytes(parents_room() + more + id_block_size)))
@@ -125,11 +143,7 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
     ex.parent.grow(parents_room());
     if (!reserve_states())
       return false;
-    // What the store took is no longer left for the workers' own buffers: each gets an
-    // equal share of what is left now.
-    const std::size_t share = budget.share_left(budget.held(), active_workers);
-    for (std::size_t w = 0; w < active_workers; ++w)
-      workers[w].allowance.reshare(workers[w].own_bytes(states), share);
+    reshare();
     return true;
   };
   LevelSignals signals;
@@ -151,10 +165,11 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
         break;
       }
       GrowthGate gate(used, grow_store);
-      const Level level{generator, ex.store,  discovery, ex.parent,
-                        gate,      begin,     end,       max_states,
-                        ex.depth,  used,      limits,    progress,
-                        signals,   reduction, states,    options.stop_at_state_limit};
+      const Level level{generator,    ex.store,  discovery, ex.parent,
+                        gate,         begin,     end,       max_states,
+                        ex.depth,     used,      limits,    progress,
+                        signals,      reduction, states,    options.stop_at_state_limit,
+                        ex.tree.get()};
       const std::span<Worker> active(workers.data(), used);
       expand_level(active, hooks, level, budget);
       if (signals.state_limit && used > 1 && !signals.out_of_time && !signals.out_of_memory &&

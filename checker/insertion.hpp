@@ -3,9 +3,11 @@
 // limits: how the start states enter an exploration (the workers of a level insert
 // concurrently, expansion.hpp). A new state gets the next id and its parent. On the
 // fingerprint store the store is asked about the state's fingerprint (its key, see
-// store_key()), and a new state goes into the level being built (level_states.hpp).
+// store_key()), and a new state goes into the level being built (level_states.hpp). On the
+// compressed store it is asked about the state's key in the tree (state_tree.hpp).
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "checker/exploration.hpp"
@@ -47,8 +49,14 @@ public:
   Result insert(const Word* state, std::uint64_t hash, StateId parent) {
     return insert(state, StoreKey{state, hash}, parent);
   }
-  // The state and its key in the store (store_key()).
+  // The state and its key in the store (store_key(); on the compressed store the key is
+  // made here).
   Result insert(const Word* state, StoreKey key, StateId parent) {
+    if (ex_.tree) {
+      if (!tree_key(state))
+        return {Outcome::memory_limit};
+      key = {&tree_key_, hash_state(&tree_key_, 1)};
+    }
     // At the state limit, a state that is not stored yet ends the run (incomplete); so a
     // space of exactly max_states states still finishes.
     if (max_states_ && ex_.store.size() >= max_states_ && !ex_.store.find(key.words, key.hash))
@@ -65,6 +73,20 @@ public:
   }
 
 private:
+  // The compressed store's key of `state` into tree_key_, its parts put in the tree (which
+  // grows within the budget); false at the memory limit.
+  bool tree_key(const Word* state) {
+    scratch_.resize(ex_.tree->scratch_size());
+    for (;;) {
+      if (const std::optional<Word> key = ex_.tree->insert(state, scratch_.data())) {
+        tree_key_ = *key;
+        return true;
+      }
+      if (!budget_.fits(ex_.tree->room_bytes()))
+        return false;
+      ex_.tree->make_room();
+    }
+  }
   // Room for one more state in the store, its parent and (fingerprint store) its state.
   bool room() {
     const std::uint64_t end = ex_.store.size() + 1;
@@ -81,6 +103,8 @@ private:
   MemoryBudget& budget_;
   std::uint64_t max_states_;
   LevelStates* states_;
+  Word tree_key_ = 0;
+  std::vector<std::uint32_t> scratch_;
 };
 
 } // namespace checker

@@ -69,9 +69,12 @@ struct Limits {
 // `fingerprint`: a 64-bit fingerprint per state, and the full states of two levels only
 // (fingerprint.hpp): far fewer bytes per state for wide states, but two states with one
 // fingerprint count as one, so a search that finds nothing is not a proof (incomplete).
-enum class StoreKind { exact, fingerprint };
+// `compressed`: every state exactly, as a one-word key into a tree of the parts states
+// share (state_tree.hpp): exact as `exact`, and few bytes per state for wide states, as
+// `fingerprint`; slower than both.
+enum class StoreKind { exact, fingerprint, compressed };
 
-const char* to_string(StoreKind kind); // "exact", "fingerprint"
+const char* to_string(StoreKind kind); // "exact", "fingerprint", "compressed"
 
 struct ExploreOptions {
   Limits limits;

@@ -114,9 +114,12 @@ PropertyResult run_within_bound(const Automaton& system, const Property& propert
 
 PropertyResult run_property(const Automaton& system, const Property& property,
                             const ExploreOptions& options) {
-  if (options.store == StoreKind::fingerprint && !runs_on_fingerprint_store(property))
+  // The compressed store is refused where the fingerprint store is: those checks read
+  // the stored states after the run (a set of them, edges, a relation).
+  if (options.store != StoreKind::exact && !runs_on_fingerprint_store(property))
     throw std::invalid_argument("property '" + property.name + "' (" + to_string(property.kind) +
-                                ") cannot run on the fingerprint store: use the exact store");
+                                ") cannot run on the " + to_string(options.store) +
+                                " store: use the exact store");
   ExploreOptions named = options;
   named.task = property.name;
   // --max-seconds is a budget for the whole property, however many explorations it runs;

@@ -69,6 +69,14 @@ PropertyResult result_of(const std::string& kind, const Exploration& ex,
   r.store = to_string(ex.store_kind);
   if (ex.fingerprints())
     r.omission_probability = omission_probability(ex.store.size());
+  if (ex.tree) {
+    std::ostringstream text;
+    text << "compressed store: " << ex.store.size() << " states held as keys into "
+         << ex.tree->parts() << " shared parts (" << std::fixed << std::setprecision(1)
+         << static_cast<double>(ex.store.memory_bytes() + ex.tree->memory_bytes()) / (1 << 20)
+         << " MiB)";
+    r.notes.push_back(text.str());
+  }
   r.time_unit = generator.timed() ? "quanta" : "steps";
   // An exploration covers every state reachable from its start set; a check that explores
   // from a part of what its statement quantifies over says so itself.
@@ -137,6 +145,9 @@ void require_exact_store(const ExploreOptions& options, const std::string& check
   if (options.store == StoreKind::fingerprint)
     throw std::invalid_argument(check + " reads the states or edges after the search, which the "
                                         "fingerprint store does not keep: use the exact store");
+  if (options.store == StoreKind::compressed)
+    throw std::invalid_argument(check + " reads the states or edges after the search, which the "
+                                        "compressed store keeps as keys: use the exact store");
 }
 
 void mark_holds(PropertyResult& result, const Exploration& ex, const std::string& message) {

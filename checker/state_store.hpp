@@ -145,6 +145,8 @@ public:
   // ids of blocks handed out during a level): only those go into a new table.
   void make_room(std::uint64_t more, const std::function<bool(StateId)>& holds = {});
 
+  // find_or_insert inserts while size() is below this (then it says `full`).
+  std::uint64_t room() const { return room_; }
   // Every id find_or_insert may hand out before it says `full` is below this.
   std::uint64_t id_limit() const { return room_ + slack_; }
 

@@ -122,9 +122,10 @@ Trace trace_to(const tioa::SuccessorGenerator& generator, const Exploration& ex,
       extend(generator, trace, states[i].data());
     return trace;
   }
-  trace.steps.push_back({"", 0, copy_state(ex.store.state(path.front()), generator.words())});
+  std::vector<Word> buffer; // (a state decoded on the compressed store)
+  trace.steps.push_back({"", 0, copy_state(ex.state(path.front(), buffer), generator.words())});
   for (std::size_t i = 1; i < path.size(); ++i)
-    extend(generator, trace, ex.store.state(path[i]));
+    extend(generator, trace, ex.state(path[i], buffer));
   return trace;
 }
 

@@ -185,12 +185,14 @@ void add_run_options(CLI::App* command, RunSettings& settings, Limits& limits, s
     command
         ->add_option(
             "--store", store,
-            "how visited states are held: exact (default), or fingerprint: 64 bits a state (as "
-            "TLC), for models that do not fit; invariants and deadlock / time-lock "
-            "checks only, and what holds is reported incomplete, \"holds up to hash "
-            "collisions, omission probability <= p\" (p = n(n-1)/2/2^64 for n states)")
+            "how visited states are held: exact (default); compressed: exact too, each state "
+            "a key into a tree of the parts states share (a few bytes a state for wide "
+            "states, slower); or fingerprint: 64 bits a state (as TLC), and what holds is "
+            "reported incomplete, \"holds up to hash collisions, omission probability <= "
+            "p\" (p = n(n-1)/2/2^64 for n states). compressed and fingerprint: invariants "
+            "and deadlock / time-lock checks only")
         ->type_name("STORE")
-        ->check(CLI::IsMember({"exact", "fingerprint"}));
+        ->check(CLI::IsMember({"exact", "fingerprint", "compressed"}));
     command->add_option("--trace", trace, "how to show traces: text, json or none")
         ->type_name("MODE")
         ->check(CLI::IsMember({"text", "json", "none"}));
@@ -359,8 +361,9 @@ int run_command(int argc, char** argv, const catalogue::Catalogue& models, const
   if (limits.max_memory_mib > (std::numeric_limits<std::uint64_t>::max() >> 20))
     return fail("--max-memory: " + std::to_string(limits.max_memory_mib) + " MiB is too large");
   settings.limits.max_memory_bytes = limits.max_memory_mib << 20;
-  settings.store =
-      store == "fingerprint" ? checker::StoreKind::fingerprint : checker::StoreKind::exact;
+  settings.store = store == "fingerprint"  ? checker::StoreKind::fingerprint
+                   : store == "compressed" ? checker::StoreKind::compressed
+                                           : checker::StoreKind::exact;
   settings.trace = trace == "json"   ? TraceMode::json
                    : trace == "none" ? TraceMode::none
                                      : TraceMode::text;

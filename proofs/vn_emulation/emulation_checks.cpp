@@ -64,13 +64,13 @@ struct PastBound {
 };
 
 // Explores the emulation and finds the first state where `failure` (when given) finds
-// something. On the exact store every reached state is read after the search, in
-// breadth-first order. The fingerprint store keeps no states after the search, so there
-// the failure is the search's target (it stops at the first one, the first in
-// breadth-first order as well), and the states past a bound are noted as the search
-// meets them: the trace to one is then to the one with the least fingerprint, not the
-// nearest. There `watch` (when given) reads every state the search meets, but the one it
-// stops at.
+// something. On the exact store (and the compressed one, which decodes them) every reached
+// state is read after the search, in breadth-first order. The fingerprint store keeps no
+// states after the search, so there the failure is the search's target (it stops at the
+// first one, the first in breadth-first order as well), and the states past a bound are
+// noted as the search meets them: the trace to one is then to the one with the least
+// fingerprint, not the nearest. There `watch` (when given) reads every state the search
+// meets, but the one it stops at.
 Run explore_emulation(const Emulation& e, const checker::ExploreOptions& options,
                       const std::string& name, const Failure& failure = {},
                       const Watch& watch = {}) {
@@ -116,11 +116,12 @@ Run explore_emulation(const Emulation& e, const checker::ExploreOptions& options
     }
     return run;
   }
+  std::vector<tioa::Word> buffer; // (a state decoded on the compressed store)
   for (StateId id = 0; id < run.ex.store.size() && !run.first_past_bound; ++id)
-    if (slots->past_bound(tioa::State(run.ex.store.state(id), 0)))
+    if (slots->past_bound(tioa::State(run.ex.state(id, buffer), 0)))
       run.first_past_bound = id;
   for (StateId id = 0; failure && id < run.ex.store.size() && !run.failed; ++id)
-    if (std::optional<std::string> why = failure(tioa::State(run.ex.store.state(id), 0))) {
+    if (std::optional<std::string> why = failure(tioa::State(run.ex.state(id, buffer), 0))) {
       run.failed = id;
       run.why = std::move(*why);
     }
@@ -400,8 +401,9 @@ PropertyResult check_theorem_2(const Emulation& e, const checker::ExploreOptions
                         "worst figures are those of the states met before it");
     }
   }
+  std::vector<tioa::Word> buffer; // (a state decoded on the compressed store)
   for (StateId id = 0; !fingerprints && id < run.ex.store.size(); ++id) {
-    const Measured m = measure(slots, tioa::State(run.ex.store.state(id), 0));
+    const Measured m = measure(slots, tioa::State(run.ex.state(id, buffer), 0));
     for (int k = 0; k < 3; ++k)
       worst_kind[k] = std::max(worst_kind[k], m.kind[k]);
     for (int f = 0; f < 3; ++f) {
