@@ -160,8 +160,9 @@ public:
 private:
   struct Pending {
     std::uint64_t hash;        // of the key the store holds
-    std::uint64_t fingerprint; // (fingerprint store) the key
+    std::uint64_t fingerprint; // (fingerprint store) the key; (compressed store) when keyed
     std::uint32_t duration;
+    bool keyed = false; // (compressed store) the key is made (else: at the insertion)
   };
   // A state of the batch being expanded: its successors are pending[first..first+count).
   struct Expanded {
@@ -188,11 +189,13 @@ private:
   StateBuffer pending_states; // successors of the batch being expanded
   std::vector<Pending> pending;
   std::vector<Expanded> batch;
-  std::uint64_t checks = 0;            // made by keep_going()
-  std::vector<Word> scratch;           // the successor generator's
-  std::vector<Word> representative;    // a successor's (the canonical hook)
-  std::vector<Word> unpacked;          // a frontier state (the fingerprint and compressed stores)
-  std::vector<std::uint32_t> tree_ids; // the compressed store's (StateTree::insert())
+  std::uint64_t checks = 0;         // made by keep_going()
+  std::vector<Word> scratch;        // the successor generator's
+  std::vector<Word> representative; // a successor's (the canonical hook)
+  std::vector<Word> unpacked;       // a frontier state (the fingerprint and compressed stores)
+  // The compressed store's: the ids of the nodes of the frontier state being expanded
+  // (StateTree::decode()) and of a successor's.
+  std::vector<std::uint32_t> frontier_ids, tree_ids;
 };
 
 template <class Hooks>
@@ -200,16 +203,17 @@ bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::u
                     std::uint32_t index) {
   const Word* succ = pending_states[index];
   const Pending& p = pending[index];
-  const Word* key_words = level.states ? &p.fingerprint : succ;
+  const Word* key_words = level.states || p.keyed ? &p.fingerprint : succ;
   std::uint64_t hash = p.hash;
-  Word tree_key = 0; // the compressed store's key of succ
+  bool keyed = !level.tree || p.keyed;
+  Word tree_key = 0; // the compressed store's key of succ, made here
   const std::uint64_t key = Discovery::key(from, step);
   StateId to = 0;
   bool fresh = false;
   for (;;) {
     if (!level.gate.checkpoint())
       return false;
-    if (level.tree) {
+    if (!keyed) {
       tree_ids.resize(level.tree->scratch_size());
       const std::optional<Word> made = level.tree->insert(succ, tree_ids.data());
       if (!made) { // a table of parts is out of room
@@ -219,6 +223,7 @@ bool Worker::insert(const Hooks& hooks, const Level& level, StateId from, std::u
       tree_key = *made;
       key_words = &tree_key;
       hash = hash_state(&tree_key, 1);
+      keyed = true;
     }
     if (level.max_states && level.store.size() >= level.max_states) {
       // At the state limit only stored states are found; a new one ends the run, and the
@@ -289,7 +294,13 @@ bool Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
       batch.clear();
       const StateId batch_end = std::min<StateId>(end, id + batch_states);
       for (; id < batch_end && pending.size() < batch_successors; ++id) {
-        const Word* state = level.frontier(id, unpacked.data());
+        const Word* state = unpacked.data();
+        if (level.tree) { // with its nodes' ids, for its successors' keys
+          frontier_ids.resize(level.tree->scratch_size());
+          level.tree->decode(level.store.state(id)[0], unpacked.data(), frontier_ids.data());
+        } else {
+          state = level.frontier(id, unpacked.data());
+        }
         if (!expands(hooks, state))
           continue;
         const std::size_t first = pending.size();
@@ -297,8 +308,8 @@ bool Worker::expand(const Hooks& hooks, const Level& level, StateId begin, State
         batch.push_back({id, static_cast<std::uint32_t>(first),
                          static_cast<std::uint32_t>(pending.size() - first)});
       }
-      if (!level.tree) // (the compressed store's keys are made at the insertion)
-        for (const Pending& p : pending)
+      for (const Pending& p : pending)
+        if (!level.tree || p.keyed)
           level.store.prefetch_state(p.hash);
       for (const Expanded& e : batch) {
         // Edges pile up in the level buffers, which grow only within this worker's share
@@ -334,7 +345,18 @@ void Worker::generate(const Hooks& hooks, const Level& level, const Word* state,
     }
     pending_states.push(succ);
     if (level.tree) {
-      pending.push_back({0, 0, duration});
+      // The key, from the parts of `state` it shares; made at the insertion instead when a
+      // table of parts is out of room (the workers wait for its growth there).
+      tree_ids.resize(level.tree->scratch_size());
+      const std::optional<Word> made =
+          level.tree->insert_near(succ, state, frontier_ids.data(), tree_ids.data());
+      if (!made) {
+        pending.push_back({0, 0, duration, false});
+        return;
+      }
+      const std::uint64_t hash = hash_state(&*made, 1);
+      level.store.prefetch(hash);
+      pending.push_back({hash, *made, duration, true});
       return;
     }
     std::uint64_t fingerprint_of = 0;

@@ -67,31 +67,44 @@ Word StateTree::value_of(const Node& n, std::uint32_t id) const {
 // Children come before their parent in nodes_, so one pass computes every id.
 std::optional<Word> StateTree::insert(const Word* state, std::uint32_t* ids) {
   for (std::size_t i = 0; i + 1 < nodes_.size(); ++i) {
-    const Node& n = nodes_[i];
-    const Word value = n.hi - n.lo == 1 ? state[n.lo] : (Word{ids[n.left]} << 32) | ids[n.right];
-    const std::optional<std::uint32_t> id = put(n, value);
+    const std::optional<std::uint32_t> id = put(nodes_[i], node_value(i, state, ids));
     if (!id)
       return std::nullopt;
     ids[i] = *id;
   }
-  const Node& root = nodes_.back();
-  return (Word{ids[root.left]} << 32) | ids[root.right];
+  return root_key(ids);
+}
+
+std::optional<Word> StateTree::insert_near(const Word* state, const Word* near,
+                                           const std::uint32_t* near_ids, std::uint32_t* ids) {
+  for (std::size_t i = 0; i + 1 < nodes_.size(); ++i) {
+    const Node& n = nodes_[i];
+    const bool same = n.hi - n.lo == 1
+                          ? state[n.lo] == near[n.lo]
+                          : ids[n.left] == near_ids[n.left] && ids[n.right] == near_ids[n.right];
+    if (same) {
+      ids[i] = near_ids[i];
+      continue;
+    }
+    const std::optional<std::uint32_t> id = put(n, node_value(i, state, ids));
+    if (!id)
+      return std::nullopt;
+    ids[i] = *id;
+  }
+  return root_key(ids);
 }
 
 std::optional<Word> StateTree::find(const Word* state, std::uint32_t* ids) const {
   for (std::size_t i = 0; i + 1 < nodes_.size(); ++i) {
-    const Node& n = nodes_[i];
-    const Word value = n.hi - n.lo == 1 ? state[n.lo] : (Word{ids[n.left]} << 32) | ids[n.right];
-    const std::optional<std::uint32_t> id = look_up(n, value);
+    const std::optional<std::uint32_t> id = look_up(nodes_[i], node_value(i, state, ids));
     if (!id)
       return std::nullopt;
     ids[i] = *id;
   }
-  const Node& root = nodes_.back();
-  return (Word{ids[root.left]} << 32) | ids[root.right];
+  return root_key(ids);
 }
 
-void StateTree::decode(Word key, Word* out) const {
+void StateTree::decode(Word key, Word* out, std::uint32_t* ids) const {
   // Down from the root, a node and its value at a time (the tree is at most 33 deep).
   struct Pending {
     std::uint32_t node;
@@ -109,6 +122,10 @@ void StateTree::decode(Word key, Word* out) const {
     }
     const auto left = static_cast<std::uint32_t>(p.value >> 32);
     const auto right = static_cast<std::uint32_t>(p.value);
+    if (ids) {
+      ids[n.left] = left;
+      ids[n.right] = right;
+    }
     stack[depth++] = {n.right, value_of(nodes_[n.right], right)};
     stack[depth++] = {n.left, value_of(nodes_[n.left], left)};
   }

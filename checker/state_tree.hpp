@@ -39,12 +39,19 @@ public:
   std::size_t scratch_size() const { return nodes_.size(); }
 
   // The key of `state`, its parts put where they are new; nullopt when a table is out of
-  // room (make_room() first). Safe with other threads doing the same.
-  std::optional<Word> insert(const Word* state, std::uint32_t* scratch);
+  // room (make_room() first). Safe with other threads doing the same. `ids` (scratch_size()
+  // words) receives the id of each node.
+  std::optional<Word> insert(const Word* state, std::uint32_t* ids);
+  // insert() for a state that differs from `near` (whose nodes have the ids `near_ids`, as
+  // decode() gives them) in a few words: the nodes over unchanged words keep their ids
+  // without a lookup.
+  std::optional<Word> insert_near(const Word* state, const Word* near,
+                                  const std::uint32_t* near_ids, std::uint32_t* ids);
   // The key of `state` when all its parts are held (else the state was never put).
-  std::optional<Word> find(const Word* state, std::uint32_t* scratch) const;
-  // The state whose key is `key` (words() words into `out`).
-  void decode(Word key, Word* out) const;
+  std::optional<Word> find(const Word* state, std::uint32_t* ids) const;
+  // The state whose key is `key` (words() words into `out`); with `ids`, the id of each
+  // node but the root.
+  void decode(Word key, Word* out, std::uint32_t* ids = nullptr) const;
 
   // How many threads insert at once (each table leaves them room).
   void set_inserters(std::uint32_t inserters);
@@ -71,6 +78,15 @@ private:
     std::uint32_t table; // no_table for the root
   };
   std::uint32_t build(std::uint32_t lo, std::uint32_t hi);
+  // The value of node `i` of `state`, its children's ids being in `ids`.
+  Word node_value(std::size_t i, const Word* state, const std::uint32_t* ids) const {
+    const Node& n = nodes_[i];
+    return n.hi - n.lo == 1 ? state[n.lo] : (Word{ids[n.left]} << 32) | ids[n.right];
+  }
+  Word root_key(const std::uint32_t* ids) const {
+    const Node& root = nodes_.back();
+    return (Word{ids[root.left]} << 32) | ids[root.right];
+  }
   // The id of a part whose value is `value` at node `n`, or nullopt (insert: out of room;
   // find: not held).
   std::optional<std::uint32_t> put(const Node& n, Word value);

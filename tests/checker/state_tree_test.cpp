@@ -143,3 +143,27 @@ TEST_CASE("threads that put states into a state tree at once get the keys of one
     for (std::size_t i = 0; i < keys[t].size(); ++i)
       CHECK(decoded(shared, keys[t][i]) == states[t + 4 * i]);
 }
+
+TEST_CASE("a state tree's key made near another state is the key made from scratch",
+          "[state_tree]") {
+  const std::uint32_t words = 11;
+  const auto states = drawn_states(words, 3000, 3);
+  StateTree tree(words);
+  std::vector<std::uint32_t> near_ids(tree.scratch_size()), ids(tree.scratch_size());
+  for (std::size_t i = 1; i < states.size(); ++i) {
+    // `near` is a stored state, decoded with its nodes' ids as the explorer does; the next
+    // state differs from it in a few words (or many).
+    const Word near_key = key_of(tree, states[i - 1]);
+    Words near(words, 0);
+    tree.decode(near_key, near.data(), near_ids.data());
+    Words next = near;
+    for (std::uint32_t w = 0; w < words; ++w)
+      if ((i + w) % (i % 4 + 2) == 0)
+        next[w] = states[i][w];
+    std::optional<Word> made;
+    while (!(made = tree.insert_near(next.data(), near.data(), near_ids.data(), ids.data())))
+      tree.make_room();
+    CHECK(*made == key_of(tree, next));
+    CHECK(decoded(tree, *made) == next);
+  }
+}
