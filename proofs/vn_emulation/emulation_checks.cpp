@@ -9,9 +9,11 @@
 #include <optional>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "checker/explorer.hpp"
 #include "checker/fingerprint.hpp"
+#include "checker/parallel_for.hpp"
 #include "checker/trace.hpp"
 #include "models/vn_emulation/delivery_monitor.hpp"
 #include "models/vn_emulation/predicates.hpp"
@@ -62,6 +64,25 @@ struct PastBound {
     }
   }
 };
+
+// The first stored state (in id order) where `holds` does, the states read on the run's
+// threads, each over a range of ids in order (decoded on the compressed store).
+std::optional<StateId> first_state_where(const checker::Exploration& ex,
+                                         const std::function<bool(const tioa::State&)>& holds) {
+  std::optional<StateId> first;
+  std::mutex first_mutex;
+  checker::parallel_for(ex.threads, ex.store.size(), [&](std::uint64_t begin, std::uint64_t end) {
+    std::vector<tioa::Word> buffer;
+    for (std::uint64_t id = begin; id < end; ++id)
+      if (holds(tioa::State(ex.state(static_cast<StateId>(id), buffer), 0))) {
+        const std::lock_guard lock(first_mutex);
+        if (!first || id < *first)
+          first = static_cast<StateId>(id);
+        return;
+      }
+  });
+  return first;
+}
 
 // Explores the emulation and finds the first state where `failure` (when given) finds
 // something. On the exact store (and the compressed one, which decodes them) every reached
@@ -116,15 +137,15 @@ Run explore_emulation(const Emulation& e, const checker::ExploreOptions& options
     }
     return run;
   }
-  std::vector<tioa::Word> buffer; // (a state decoded on the compressed store)
-  for (StateId id = 0; id < run.ex.store.size() && !run.first_past_bound; ++id)
-    if (slots->past_bound(tioa::State(run.ex.state(id, buffer), 0)))
-      run.first_past_bound = id;
-  for (StateId id = 0; failure && id < run.ex.store.size() && !run.failed; ++id)
-    if (std::optional<std::string> why = failure(tioa::State(run.ex.state(id, buffer), 0))) {
-      run.failed = id;
-      run.why = std::move(*why);
-    }
+  run.first_past_bound =
+      first_state_where(run.ex, [&](const tioa::State& s) { return slots->past_bound(s); });
+  if (failure)
+    run.failed =
+        first_state_where(run.ex, [&](const tioa::State& s) { return failure(s).has_value(); });
+  if (run.failed) {
+    std::vector<tioa::Word> buffer;
+    run.why = failure(tioa::State(run.ex.state(*run.failed, buffer), 0)).value_or("");
+  }
   return run;
 }
 
@@ -401,21 +422,52 @@ PropertyResult check_theorem_2(const Emulation& e, const checker::ExploreOptions
                         "worst figures are those of the states met before it");
     }
   }
-  std::vector<tioa::Word> buffer; // (a state decoded on the compressed store)
-  for (StateId id = 0; !fingerprints && id < run.ex.store.size(); ++id) {
-    const Measured m = measure(slots, tioa::State(run.ex.state(id, buffer), 0));
-    for (int k = 0; k < 3; ++k)
-      worst_kind[k] = std::max(worst_kind[k], m.kind[k]);
+  // On the exact and compressed stores every state is measured after the search, on the
+  // run's threads, each over a range of ids in order; the ranges are then taken in id
+  // order, so the worst values, where each is first reached and the first state past a
+  // stated figure are those of one thread reading every state in order.
+  struct Range {
+    std::uint64_t begin = 0;
+    int worst[3] = {0, 0, 0}, kind[3] = {0, 0, 0};
+    std::optional<StateId> worst_at[3], first_past[3];
+  };
+  std::vector<Range> ranges;
+  std::mutex ranges_mutex;
+  if (!fingerprints)
+    checker::parallel_for(
+        run.ex.threads, run.ex.store.size(), [&](std::uint64_t begin, std::uint64_t end) {
+          Range range;
+          range.begin = begin;
+          std::vector<tioa::Word> buffer; // (decoded: compressed store)
+          for (std::uint64_t id = begin; id < end; ++id) {
+            const auto at = static_cast<StateId>(id);
+            const Measured m = measure(slots, tioa::State(run.ex.state(at, buffer), 0));
+            for (int f = 0; f < 3; ++f) {
+              range.kind[f] = std::max(range.kind[f], m.kind[f]);
+              if (m.figure[f] > range.worst[f]) {
+                range.worst[f] = m.figure[f];
+                range.worst_at[f] = at;
+              }
+              if (m.figure[f] > figures[f].stated && !range.first_past[f])
+                range.first_past[f] = at;
+            }
+          }
+          const std::lock_guard lock(ranges_mutex);
+          ranges.push_back(range);
+        });
+  std::sort(ranges.begin(), ranges.end(),
+            [](const Range& a, const Range& b) { return a.begin < b.begin; });
+  for (const Range& range : ranges)
     for (int f = 0; f < 3; ++f) {
+      worst_kind[f] = std::max(worst_kind[f], range.kind[f]);
       Figure& figure = figures[f];
-      if (m.figure[f] > figure.worst) {
-        figure.worst = m.figure[f];
-        figure.worst_at = id;
+      if (range.worst[f] > figure.worst) {
+        figure.worst = range.worst[f];
+        figure.worst_at = range.worst_at[f];
       }
-      if (m.figure[f] > figure.stated && !figure.first_past)
-        figure.first_past = id;
+      if (range.first_past[f] && !figure.first_past)
+        figure.first_past = range.first_past[f];
     }
-  }
 
   std::string summary;
   for (const Figure& f : figures) {
