@@ -6,8 +6,9 @@
 // that level_end.hpp can number the level as a sequential search would. On the
 // fingerprint store the frontier's states and the new ones are in level_states.hpp, and the
 // store is asked about fingerprints (insertion.hpp's store_key()). On the compressed store
-// the frontier's states are decoded from the tree and the store is asked about each
-// successor's key in it (state_tree.hpp), made as the successor is inserted.
+// the frontier's states are decoded from the tree, with their nodes' ids, and the store is
+// asked about each successor's key in it (state_tree.hpp), made from its parent's parts as
+// it is generated (or at its insertion, when a table of parts was out of room).
 
 #include <algorithm>
 #include <atomic>
