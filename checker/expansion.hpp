@@ -66,13 +66,9 @@ struct Level {
   std::uint32_t id_block() const { return concurrent() ? id_block_size : 1; }
   // The first id of the level being built.
   StateId first_new() const { return discovery.first(); }
-  // A state of the frontier (on the fingerprint store unpacked, on the compressed store
-  // decoded, into `scratch`, words()).
+  // A state of the frontier (on the fingerprint store unpacked into `scratch`, words()).
+  // The compressed store's are decoded by Worker::expand, with their nodes' ids.
   const Word* frontier(StateId id, Word* scratch) const {
-    if (tree) {
-      tree->decode(store.state(id)[0], scratch);
-      return scratch;
-    }
     return states ? states->frontier(id, scratch) : store.state(id);
   }
 };
