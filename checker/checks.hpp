@@ -45,10 +45,11 @@ PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& 
                                  const StatePredicate& ended = {},
                                  const std::string& ended_name = "");
 
-// check_invariant and check_no_deadlock run on either store (ExploreOptions::store); on the
+// check_invariant and check_no_deadlock run on every store (ExploreOptions::store); on the
 // fingerprint store a run that finds nothing is incomplete ("holds up to hash collisions").
-// The other checks read the states or edges after the search and throw this when asked
-// for the fingerprint or compressed store: std::invalid_argument naming `check`.
-void require_exact_store(const ExploreOptions& options, const std::string& check);
+// The other checks read the states or edges after the search (through StateReader, so on
+// the exact and the compressed store) and throw this when asked for the fingerprint store,
+// which keeps no states: std::invalid_argument naming `check`.
+void require_stored_states(const ExploreOptions& options, const std::string& check);
 
 } // namespace checker

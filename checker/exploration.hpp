@@ -86,6 +86,9 @@ struct Exploration {
   // The state `id` (state_words words): in the store, or on the compressed store decoded
   // into `buffer`. Not on the fingerprint store, which keeps no states (trace.hpp).
   const Word* state(StateId id, std::vector<Word>& buffer) const;
+  // The id of a stored state equal to `state` (state_words words), if there is one. Not on
+  // the fingerprint store.
+  std::optional<StateId> find(const Word* state) const;
 
   bool complete() const { return stop == StopReason::finished || stop == StopReason::found; }
   std::size_t memory_bytes() const {
@@ -100,6 +103,20 @@ struct Exploration {
       return {};
     return {edge_targets.data() + edge_offsets[v], edge_targets.data() + edge_offsets[v + 1]};
   }
+};
+
+// Reads an exploration's states one at a time, whatever its store: on the exact store a
+// pointer into it, on the compressed store the state decoded into this reader's buffer,
+// valid until its next read. A thread needs its own reader, and code that holds two states
+// at once needs two.
+class StateReader {
+public:
+  explicit StateReader(const Exploration& ex) : ex_(&ex) {}
+  const Word* operator()(StateId id) { return ex_->state(id, buffer_); }
+
+private:
+  const Exploration* ex_;
+  std::vector<Word> buffer_;
 };
 
 } // namespace checker

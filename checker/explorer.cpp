@@ -31,6 +31,18 @@ const Word* Exploration::state(StateId id, std::vector<Word>& buffer) const {
   return buffer.data();
 }
 
+std::optional<StateId> Exploration::find(const Word* state) const {
+  if (fingerprints())
+    throw std::logic_error("the fingerprint store keeps no states");
+  if (!tree)
+    return store.find(state, hash_state(state, state_words));
+  std::vector<std::uint32_t> ids(tree->scratch_size());
+  const std::optional<Word> key = tree->find(state, ids.data());
+  if (!key) // a part of it was never stored
+    return std::nullopt;
+  return store.find(&*key, hash_state(&*key, 1));
+}
+
 const char* to_string(StoreKind kind) {
   switch (kind) {
   case StoreKind::fingerprint:

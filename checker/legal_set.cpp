@@ -70,14 +70,15 @@ ClosureScan scan_closure(const tioa::SuccessorGenerator& generator, const tioa::
 
 PropertyResult check_legal_set(const Automaton& system, const StatePredicate& legal,
                                const ExploreOptions& options) {
-  require_exact_store(options, "the legal-set check");
+  require_stored_states(options, "the legal-set check");
   const auto began = ScanClock::now();
   const tioa::SuccessorGenerator generator(system);
   Progress progress(options.progress, options.task.empty() ? "closure" : options.task);
 
   PropertyResult r;
   r.kind = "legal-set";
-  r.threads = 1; // one pass over the members of L, in enumeration order
+  r.store = to_string(options.store); // (asked for: the scan enumerates L and keeps no state)
+  r.threads = 1;                      // one pass over the members of L, in enumeration order
   r.time_unit = generator.timed() ? "quanta" : "steps";
   ClosureScan scan;
   if (Collective* ranks = distributed()) {

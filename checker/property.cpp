@@ -114,9 +114,9 @@ PropertyResult run_within_bound(const Automaton& system, const Property& propert
 
 PropertyResult run_property(const Automaton& system, const Property& property,
                             const ExploreOptions& options) {
-  // The compressed store is refused where the fingerprint store is: those checks read
-  // the stored states after the run (a set of them, edges, a relation).
-  if (options.store != StoreKind::exact && !runs_on_fingerprint_store(property))
+  // The other checks read the stored states after the run (a set of them, edges, a
+  // relation), which the fingerprint store does not keep.
+  if (options.store == StoreKind::fingerprint && !runs_on_fingerprint_store(property))
     throw std::invalid_argument("property '" + property.name + "' (" + to_string(property.kind) +
                                 ") cannot run on the " + to_string(options.store) +
                                 " store: use the exact store");

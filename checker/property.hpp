@@ -26,9 +26,10 @@ struct Property {
   std::string first_name;
   // custom: a check of its own (e.g. a lemma over a family of instances, proofs/).
   std::function<PropertyResult(const ExploreOptions&)> run = {};
-  // custom: whether `run` accepts the fingerprint and compressed stores (it runs
-  // check_invariant or check_no_deadlock and reads nothing else of a search, or reads the
-  // stored states through Exploration::state()).
+  // custom: whether `run` accepts the fingerprint store (it runs check_invariant or
+  // check_no_deadlock and reads nothing else of a search, or reads the stored states only
+  // where the store keeps them). Every check runs on the compressed store: they read the
+  // stored states through StateReader (exploration.hpp).
   bool fingerprint_store = false;
   // The states past a bound of the model (a channel that a send found full): the model
   // stops there, and such a state stands for continuations it cannot hold. Empty: none.
@@ -38,10 +39,9 @@ struct Property {
   std::string bound_name = ""; // what was exceeded, in words: "a channel of capacity 4"
 };
 
-// Whether the property may run on the fingerprint store (ExploreOptions::store), and on
-// the compressed store: invariants and deadlocks, whose checks read nothing of the search
-// but its counts, its parents and the states they keep (checks.hpp), and the custom
-// checks that say so.
+// Whether the property may run on the fingerprint store (ExploreOptions::store):
+// invariants and deadlocks, whose checks read nothing of the search but its counts, its
+// parents and the states they keep (checks.hpp), and the custom checks that say so.
 bool runs_on_fingerprint_store(const Property& property);
 
 // Throws std::invalid_argument for a property that cannot run on the store `options` ask

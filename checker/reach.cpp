@@ -8,7 +8,7 @@
 namespace checker {
 
 tioa::Automaton R(const tioa::Automaton& a, const ExploreOptions& options) {
-  require_exact_store(options, "R(" + a.name() + ")");
+  require_stored_states(options, "R(" + a.name() + ")");
   const tioa::SuccessorGenerator generator(a);
   const Exploration ex = explore(generator, a.start(), options);
   if (!ex.complete())
@@ -16,8 +16,11 @@ tioa::Automaton R(const tioa::Automaton& a, const ExploreOptions& options) {
                            describe(ex.stop) + ")");
   std::vector<Word> states;
   states.reserve(ex.store.size() * generator.words());
-  for (StateId id = 0; id < ex.store.size(); ++id)
-    states.insert(states.end(), ex.store.state(id), ex.store.state(id) + generator.words());
+  StateReader read(ex);
+  for (StateId id = 0; id < ex.store.size(); ++id) {
+    const Word* state = read(id);
+    states.insert(states.end(), state, state + generator.words());
+  }
   return tioa::Start(a,
                      tioa::StartSet::listed(a.layout().bits(), generator.words(), std::move(states),
                                             "the reachable states of " + a.name() + " (R)"));

@@ -141,13 +141,11 @@ void mark_incomplete(PropertyResult& result, const Exploration& ex, const std::s
 
 namespace checker {
 
-void require_exact_store(const ExploreOptions& options, const std::string& check) {
+void require_stored_states(const ExploreOptions& options, const std::string& check) {
   if (options.store == StoreKind::fingerprint)
     throw std::invalid_argument(check + " reads the states or edges after the search, which the "
-                                        "fingerprint store does not keep: use the exact store");
-  if (options.store == StoreKind::compressed)
-    throw std::invalid_argument(check + " reads the states or edges after the search, which the "
-                                        "compressed store keeps as keys: use the exact store");
+                                        "fingerprint store does not keep: use the exact or the "
+                                        "compressed store");
 }
 
 void mark_holds(PropertyResult& result, const Exploration& ex, const std::string& message) {

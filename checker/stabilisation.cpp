@@ -86,8 +86,9 @@ Graph build_graph(Exploration& ex, const StatePredicate& legal, const StatePredi
   Graph g;
   g.legal.resize(n);
   g.settled.resize(n);
+  StateReader read(ex);
   for (std::size_t v = 0; v < n; ++v) {
-    const tioa::State state(ex.store.state(static_cast<StateId>(v)), 0);
+    const tioa::State state(read(static_cast<StateId>(v)), 0);
     g.settled[v] = settled && settled(state) ? 1 : 0;
     g.legal[v] = g.settled[v] || legal(state) ? 1 : 0;
   }
@@ -248,8 +249,9 @@ std::optional<Path> path_inside(const Graph& g, const Components& c, StateId fro
 
 void append(const tioa::SuccessorGenerator& gen, const Exploration& ex, Trace& trace,
             const Path& path) {
+  StateReader read(ex);
   for (const auto& [state, duration] : path)
-    extend(gen, trace, ex.store.state(state), duration);
+    extend(gen, trace, read(state), duration);
 }
 
 // A stem to u, then a cycle u ~> x -(duration 1)-> y ~> u inside u's component.
@@ -269,7 +271,7 @@ Trace timed_cycle(const tioa::SuccessorGenerator& gen, const Exploration& ex, co
     return false;
   };
   append(gen, ex, trace, *path_inside(g, c, u, timed_internal));
-  extend(gen, trace, ex.store.state(y), 1);
+  extend(gen, trace, StateReader(ex)(y), 1);
   append(gen, ex, trace, *path_inside(g, c, y, [&](StateId v) { return v == u; }));
   trace.loop_start = loop_start;
   return trace;
@@ -308,7 +310,7 @@ Trace witness(const tioa::SuccessorGenerator& gen, const Exploration& ex, const 
     });
     if (auto path = path_inside(g, c, cur, realising)) {
       append(gen, ex, trace, *path);
-      extend(gen, trace, ex.store.state(next), next_duration);
+      extend(gen, trace, StateReader(ex)(next), next_duration);
       cur = next;
       continue;
     }
@@ -321,7 +323,7 @@ Trace witness(const tioa::SuccessorGenerator& gen, const Exploration& ex, const 
         exit_where([&](StateId t, std::uint32_t) { return c.last[c.of[t]] == Components::never; });
     if (auto path = path_inside(g, c, cur, for_good)) {
       append(gen, ex, trace, *path);
-      extend(gen, trace, ex.store.state(next), next_duration);
+      extend(gen, trace, StateReader(ex)(next), next_duration);
     }
     return trace;
   }
@@ -336,13 +338,13 @@ void check_progress_measure(const Automaton& system, const Exploration& ex, cons
   // In an untimed automaton every step lasts one unit (its edges carry the timed bit); in
   // a timed one those edges are ticks, which the measure does not speak of.
   const bool ticks = system.timed();
+  StateReader read(ex);
   for (StateId v = 0; v < ex.store.size(); ++v) {
-    const std::uint64_t here = measure(tioa::State(ex.store.state(v), 0));
+    const std::uint64_t here = measure(tioa::State(read(v), 0));
     const auto [begin, end] = g.out(v);
     for (auto t = begin; t != end; ++t) {
       const StateId to = *t & ~Edge::timed_bit;
-      if ((ticks && (*t & Edge::timed_bit) != 0) ||
-          measure(tioa::State(ex.store.state(to), 0)) > here)
+      if ((ticks && (*t & Edge::timed_bit) != 0) || measure(tioa::State(read(to), 0)) > here)
         continue;
       throw tioa::ModelError("a step of " + system.name() +
                              " does not increase the progress measure it declares (from state " +
@@ -364,7 +366,7 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
     if (std::optional<PropertyResult> r =
             check_stabilisation_without_cycles(system, legal, options))
       return std::move(*r);
-  require_exact_store(options, "the stabilisation check");
+  require_stored_states(options, "the stabilisation check");
   const tioa::SuccessorGenerator gen(system);
   ExploreHooks hooks;
   hooks.record_edges = true;

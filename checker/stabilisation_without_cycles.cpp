@@ -15,12 +15,13 @@ std::optional<PropertyResult> check_stabilisation_without_cycles(const Automaton
   const ZeroTimeReduction reduction(generator, tioa::StatePredicate{});
   if (!reduction.can_reduce())
     return std::nullopt;
-  require_exact_store(options, "the stabilisation check");
+  require_stored_states(options, "the stabilisation check");
   const Exploration ex = explore(generator, system.start(), options, hooks(), &reduction);
   PropertyResult r = result_of("stabilisation", ex, generator);
   std::vector<StateId> ends_outside; // the stuck states outside L
+  StateReader read(ex);
   for (const StateId id : ex.stuck)
-    if (!legal(tioa::State(ex.store.state(id), 0)))
+    if (!legal(tioa::State(read(id), 0)))
       ends_outside.push_back(id);
   if (!ends_outside.empty()) {
     r.verdict = Verdict::violated;

@@ -11,7 +11,7 @@ namespace checker {
 PropertyResult check_transitivity(const Automaton& system, const StatePredicate& l1,
                                   const std::string& l1_name, const StatePredicate& l2,
                                   const std::string& l2_name, const ExploreOptions& options) {
-  require_exact_store(options, "the transitivity check");
+  require_stored_states(options, "the transitivity check");
   const PropertyResult first = check_stabilisation(system, l1, options);
   const PropertyResult second = check_stabilisation(tioa::Start(system, l1, l1_name), l2, options);
   const PropertyResult direct = check_stabilisation(system, l2, options);
@@ -23,6 +23,7 @@ PropertyResult check_transitivity(const Automaton& system, const StatePredicate&
   r.edges = first.edges + second.edges + direct.edges;
   r.seconds = first.seconds + second.seconds + direct.seconds;
   r.threads = direct.threads;
+  r.store = direct.store;
   r.coverage = direct.coverage;
   auto time_of = [](const PropertyResult& p) {
     return p.worst_time ? std::to_string(*p.worst_time) : std::string(to_string(p.verdict));

@@ -189,8 +189,8 @@ void add_run_options(CLI::App* command, RunSettings& settings, Limits& limits, s
             "a key into a tree of the parts states share (a few bytes a state for wide "
             "states, slower); or fingerprint: 64 bits a state (as TLC), and what holds is "
             "reported incomplete, \"holds up to hash collisions, omission probability <= "
-            "p\" (p = n(n-1)/2/2^64 for n states). compressed and fingerprint: invariants "
-            "and deadlock / time-lock checks only")
+            "p\" (p = n(n-1)/2/2^64 for n states), for invariants and deadlock / time-lock "
+            "checks only")
         ->type_name("STORE")
         ->check(CLI::IsMember({"exact", "fingerprint", "compressed"}));
     command->add_option("--trace", trace, "how to show traces: text, json or none")

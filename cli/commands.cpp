@@ -109,17 +109,15 @@ int command_check(const catalogue::Catalogue& models, const ModelRequest& reques
   const auto properties =
       with_given_invariant(select_properties(built.instance, request.model, request.properties),
                            invariant, request, settings);
-  if (settings.store != checker::StoreKind::exact)
+  if (settings.store == checker::StoreKind::fingerprint)
     for (const checker::Property* property : properties)
-      if (!checker::runs_on_fingerprint_store(*property)) {
-        const std::string store = checker::to_string(settings.store);
+      if (!checker::runs_on_fingerprint_store(*property))
         throw catalogue::UsageError(
-            "--store " + store + ": property '" + property->name + "' of model '" + request.model +
+            "--store fingerprint: property '" + property->name + "' of model '" + request.model +
             "' is a " + checker::to_string(property->kind) +
-            " property that reads states or edges after the search, which the " + store +
-            " store does not keep as states (invariants, deadlock / time-lock checks and some "
-            "custom checks run on it): use --store exact");
-      }
+            " property that reads states or edges after the search, which the fingerprint "
+            "store does not keep (invariants, deadlock / time-lock checks and some custom "
+            "checks run on it): use --store exact or --store compressed");
   ReportFiles files(settings);
   if (!settings.dot_path.empty())
     write_state_graph(system, settings.dot_path);

@@ -58,13 +58,21 @@ PropertyResult check_lemma_7_6(const VlConfig& c, const tioa::Automaton& layer, 
 
   // The initial pairs: each family state with each related reachable state (`origin`: its id
   // in Reach, for y's trace).
-  std::vector<checker::StartPair> starts;
+  // The related states are copied out of Reach's store (which may hold them compressed).
   std::vector<StateId> origin;
+  std::vector<std::size_t> family_of;
+  std::vector<tioa::Word> related_states;
+  checker::StateReader read(m.reach);
   for (std::size_t i = 0; i < m.family.size(); ++i)
     for (const StateId y : m.related[i]) {
-      starts.push_back({m.family[i].data(), m.reach.store.state(y)});
+      const tioa::Word* state = read(y);
+      related_states.insert(related_states.end(), state, state + gy.words());
+      family_of.push_back(i);
       origin.push_back(y);
     }
+  std::vector<checker::StartPair> starts;
+  for (std::size_t k = 0; k < origin.size(); ++k)
+    starts.push_back({m.family[family_of[k]].data(), related_states.data() + k * gy.words()});
   const checker::SimulationSearch search = checker::search_simulation(
       gx, gy, [&](const tioa::Word* x, const tioa::Word* y) { return relation.related(x, y); },
       starts,

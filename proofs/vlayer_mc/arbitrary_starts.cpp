@@ -35,9 +35,11 @@ EnvironmentStates environment_states(const tioa::Automaton& env, std::uint64_t l
   const checker::Exploration reach = checker::explore(generator, env.start(), bounded);
   EnvironmentStates out{{words, {}}, reach.complete()};
   if (out.all) {
-    for (checker::StateId id = 0; id < reach.store.size(); ++id)
-      out.states.data.insert(out.states.data.end(), reach.store.state(id),
-                             reach.store.state(id) + words);
+    checker::StateReader read(reach);
+    for (checker::StateId id = 0; id < reach.store.size(); ++id) {
+      const tioa::Word* state = read(id);
+      out.states.data.insert(out.states.data.end(), state, state + words);
+    }
     return out;
   }
   StateList starts{words, {}};

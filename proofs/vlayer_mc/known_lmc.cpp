@@ -89,7 +89,7 @@ bool KnownLmc::contains(const tioa::State& s) const {
   copy.assign(s.words(), s.words() + words_);
   tioa::State state(copy.data(), 0);
   canonical(state);
-  return ex_->store.find(copy.data(), checker::hash_state(copy.data(), words_)).has_value();
+  return ex_->find(copy.data()).has_value();
 }
 
 std::vector<Word> KnownLmc::representative(const tioa::State& s) const {

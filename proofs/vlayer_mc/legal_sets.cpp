@@ -27,7 +27,8 @@ void closure_counterexample(PropertyResult& r, const tioa::SuccessorGenerator& g
                             const checker::Exploration& ex, const ClauseCheck& clauses,
                             const std::string& from) {
   const checker::StateId id = *ex.found;
-  const auto broken = support::join(clauses(tioa::State(ex.store.state(id), 0)));
+  checker::StateReader read(ex);
+  const auto broken = support::join(clauses(tioa::State(read(id), 0)));
   r.verdict = Verdict::violated;
   r.trace = checker::trace_to(generator, ex, id);
   r.trace_role = "counterexample";
@@ -151,8 +152,9 @@ PropertyResult check_reset_in_l1mc(const VlConfig& c, const tioa::Automaton& sys
   // The counts below read every state again, and the family is built whole: the property's
   // limits bound them too (a run stopped here is incomplete, whatever it counted).
   checker::PropertyLimitPoll limit(options.limits);
+  checker::StateReader read(ex);
   for (checker::StateId id = 0; id < ex.store.size() && !limit.reached(id); ++id)
-    switch (classify(ex.store.state(id))) {
+    switch (classify(read(id))) {
     case Kind::reset:
       ++reached_reset;
       break;
@@ -230,7 +232,7 @@ PropertyResult check_reset_in_l1mc(const VlConfig& c, const tioa::Automaton& sys
       r.trace_kind = "invariant";
       r.notes.push_back("clause (1) is needed: a reachable state meets Def 7.2 (2)-(5) but "
                         "breaks L1MC (" +
-                        support::join(clauses(tioa::State(ex.store.state(*first_outside), 0))) +
+                        support::join(clauses(tioa::State(read(*first_outside), 0))) +
                         "); the witness trace leads to it");
     }
   }
@@ -271,7 +273,8 @@ PropertyResult check_lmc_closure(const VlConfig& c, const tioa::Automaton& layer
                                         "and ticks explored; checked: each is in L1MC and has "
                                         "a successor");
   const auto class_trace = [&](checker::StateId id) {
-    const std::vector<Word> wanted = lmc.representative(tioa::State(ex.store.state(id), 0));
+    checker::StateReader read(ex);
+    const std::vector<Word> wanted = lmc.representative(tioa::State(read(id), 0));
     checker::ExploreHooks hooks;
     hooks.target = [&](const Word* s) { return lmc.representative(tioa::State(s, 0)) == wanted; };
     return checker::explore(generator, from.start(), options, hooks);

@@ -99,10 +99,11 @@ Matching match_family(const VlConfig& c, const tioa::Automaton& layer, const tio
   };
   std::vector<std::pair<std::uint64_t, StateId>> index;
   index.reserve(m.reach.store.size());
+  checker::StateReader read(m.reach);
   for (StateId id = 0; id < m.reach.store.size(); ++id) {
     if (limit_reached(id))
       return m;
-    index.emplace_back(relation.key(m.reach.store.state(id)), id);
+    index.emplace_back(relation.key(read(id)), id);
   }
   std::sort(index.begin(), index.end());
   for (std::size_t i = 0; i < m.family.size(); ++i) {
@@ -112,7 +113,7 @@ Matching match_family(const VlConfig& c, const tioa::Automaton& layer, const tio
     const auto key = relation.key(x);
     auto at = std::lower_bound(index.begin(), index.end(), std::make_pair(key, StateId{0}));
     for (; at != index.end() && at->first == key; ++at) {
-      const Word* y = m.reach.store.state(at->second);
+      const Word* y = read(at->second);
       if (relation.related(x, y))
         m.related[i].push_back(at->second);
       for (std::size_t r = 0; r < readings.size(); ++r)
@@ -126,8 +127,9 @@ std::pair<StateId, std::vector<std::string>>
 closest(const RmcRelation& relation, const checker::Exploration& reach, const Word* x) {
   std::pair<StateId, std::vector<std::string>> best{0, {}};
   std::size_t fewest = SIZE_MAX;
+  checker::StateReader read(reach);
   for (StateId id = 0; id < reach.store.size(); ++id) {
-    auto broken = relation.broken(x, reach.store.state(id));
+    auto broken = relation.broken(x, read(id));
     if (broken.size() < fewest) {
       fewest = broken.size();
       best = {id, std::move(broken)};

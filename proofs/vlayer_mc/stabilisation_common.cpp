@@ -22,12 +22,13 @@ StateList reached_where(const tioa::Automaton& system, const tioa::StatePredicat
   StateList out{system.words(), {}};
   // The list is built outside the exploration: the property's limits bound it too.
   checker::PropertyLimitPoll limit(options.limits);
+  checker::StateReader read(ex);
   for (checker::StateId id = 0; id < ex.store.size(); ++id) {
     if (limit.reached(id)) {
       complete = false;
       break;
     }
-    const Word* w = ex.store.state(id);
+    const Word* w = read(id);
     if (keep(tioa::State(w, 0)))
       out.data.insert(out.data.end(), w, w + system.words());
   }

@@ -37,8 +37,10 @@ void mark_trace(checker::PropertyResult& r, const RoundLegalSet& legal) {
 // step after that state is a step of the automaton from it, and it is in L_round.
 checker::Trace round_trace(const tioa::SuccessorGenerator& gen, const checker::Exploration& ex,
                            const RoundView& view, const RoundLegalSet& legal, StateId v) {
+  checker::StateReader read(ex);
   const auto in_l_round = [&](StateId w) {
-    return view.round_begins(ex.store.state(w)) && legal.contains(ex.store.state(w));
+    const tioa::Word* state = read(w);
+    return view.round_begins(state) && legal.contains(state);
   };
   std::vector<StateId> path;
   StateId from = v;
@@ -47,11 +49,11 @@ checker::Trace round_trace(const tioa::SuccessorGenerator& gen, const checker::E
       throw std::logic_error("vn-layer round-closure: a start state outside L_round");
     path.push_back(from);
   }
-  const tioa::Word* first = ex.store.state(from);
+  const tioa::Word* first = read(from);
   checker::Trace trace;
   trace.steps.push_back({"", 0, std::vector<tioa::Word>(first, first + ex.state_words)});
   for (auto w = path.rbegin(); w != path.rend(); ++w)
-    if (!checker::extend(gen, trace, ex.store.state(*w)))
+    if (!checker::extend(gen, trace, read(*w)))
       throw std::logic_error("vn-layer round-closure: a parent is no step of the model");
   return trace;
 }
@@ -78,11 +80,13 @@ bool first_round(const VnConfig& c, const tioa::Automaton& system,
     checker::mark_incomplete(r, ex, "(a) no round-1 start outside L_round found so far");
     return false;
   }
+  checker::StateReader read(ex);
   for (StateId v = 0; v < ex.store.size(); ++v) {
-    if (tioa::State(ex.store.state(v), 0)[epoch] == 0)
+    const tioa::Word* state = read(v);
+    if (tioa::State(state, 0)[epoch] == 0)
       continue;
     ++firsts;
-    if (const auto why = legal.broken(ex.store.state(v))) {
+    if (const auto why = legal.broken(state)) {
       r.verdict = Verdict::violated;
       r.trace = checker::trace_to(gen, ex, v);
       r.trace_role = "counterexample";
@@ -129,7 +133,7 @@ checker::PropertyResult check_round_closure(const VnConfig& c, const tioa::Autom
                 "recoveries (Theorem 1's premise, 002:234), and cn_faults=1 allows them";
     return r;
   }
-  checker::require_exact_store(options, "round-closure");
+  checker::require_stored_states(options, "round-closure");
   const RoundLegalSet legal(layer, c);
 
   // (a)
@@ -189,8 +193,9 @@ checker::PropertyResult check_round_closure(const VnConfig& c, const tioa::Autom
     r.trace_kind = kind;
     mark_trace(r, legal);
   };
+  checker::StateReader read(ex);
   for (StateId v = 0; v < ex.store.size(); ++v) // the model's bound first: past it, no verdict
-    if (legal.overflowed(ex.store.state(v))) {
+    if (legal.overflowed(read(v))) {
       set_trace(v, "overflow");
       r.verdict = Verdict::incomplete;
       r.message = "a send found the model's places taken (overflow), so the rounds explored "
@@ -202,7 +207,7 @@ checker::PropertyResult check_round_closure(const VnConfig& c, const tioa::Autom
     if (!walker.is_later_start(v))
       continue;
     ++later_starts;
-    if (const auto why = legal.broken(ex.store.state(v))) {
+    if (const auto why = legal.broken(read(v))) {
       set_trace(v, "invariant");
       r.verdict = Verdict::violated;
       r.message = "(b) a round from an L_round state ends outside L_round (" + *why +
@@ -220,7 +225,7 @@ checker::PropertyResult check_round_closure(const VnConfig& c, const tioa::Autom
     return r;
   }
   for (StateId v = 0; v < ex.store.size(); ++v) {
-    if (const auto h = legal.stale_reader(ex.store.state(v))) {
+    if (const auto h = legal.stale_reader(read(v))) {
       set_trace(v, "stale-read");
       r.trace_role = "witness";
       r.verdict = Verdict::incomplete;

@@ -113,7 +113,7 @@ checker::PropertyResult check_reading(const VnConfig& c, const tioa::Automaton& 
                 "round-level system models";
     return r;
   }
-  checker::require_exact_store(options, reading.property);
+  checker::require_stored_states(options, reading.property);
   const tioa::SuccessorGenerator gen(system);
   checker::ExploreHooks hooks;
   hooks.record_edges = true;
@@ -130,6 +130,7 @@ checker::PropertyResult check_reading(const VnConfig& c, const tioa::Automaton& 
   // From each round start, the states of its round are searched up to the round starts
   // that end it.
   RoundWalker rounds(ex, view);
+  checker::StateReader read(ex);
   const std::uint64_t n = ex.store.size();
   std::uint64_t round_starts = 0, pairs = 0;
   checker::PropertyLimitPoll poll(options.limits);
@@ -144,7 +145,7 @@ checker::PropertyResult check_reading(const VnConfig& c, const tioa::Automaton& 
       return r;
     }
     ++round_starts;
-    const std::vector<int> from = reading.read(ex.store.state(start));
+    const std::vector<int> from = reading.read(read(start));
     // A start state and a later round start are told apart by how they were reached; one
     // state that is both is held to both.
     std::vector<std::vector<int>> allowed;
@@ -154,7 +155,7 @@ checker::PropertyResult check_reading(const VnConfig& c, const tioa::Automaton& 
       allowed.push_back(reading.after_round(from));
     rounds.walk(start, [&](StateId v, StateId to) {
       ++pairs;
-      const std::vector<int> found = reading.read(ex.store.state(to));
+      const std::vector<int> found = reading.read(read(to));
       for (const std::vector<int>& expected : allowed)
         if (found != expected) {
           mismatch = Mismatch{start, to, rounds.path_within(start, v), found, expected, from};

@@ -52,9 +52,10 @@ RoundWalker::RoundWalker(const checker::Exploration& ex, const RoundView& view)
     : ex_(ex), later_start_(ex.store.size(), 0), seen_in_(ex.store.size(), 0),
       came_from_(ex.store.size(), checker::no_parent) {
   const StateId n = ex.store.size();
+  checker::StateReader read(ex);
   for (StateId v = 0; v < n; ++v)
     for (const std::uint32_t t : ex.steps_from(v))
-      if ((t & Edge::timed_bit) && view.round_begins(ex.store.state(t & ~Edge::timed_bit)))
+      if ((t & Edge::timed_bit) && view.round_begins(read(t & ~Edge::timed_bit)))
         later_start_[t & ~Edge::timed_bit] = 1;
 }
 
@@ -69,9 +70,10 @@ std::vector<StateId> RoundWalker::path_within(StateId start, StateId v) const {
 void extend_by_round(const tioa::SuccessorGenerator& generator, const checker::Exploration& ex,
                      checker::Trace& trace, const std::vector<StateId>& within, StateId to) {
   bool extended = true;
+  checker::StateReader read(ex);
   for (const StateId w : within)
-    extended = extended && checker::extend(generator, trace, ex.store.state(w));
-  extended = extended && checker::extend(generator, trace, ex.store.state(to), 1u);
+    extended = extended && checker::extend(generator, trace, read(w));
+  extended = extended && checker::extend(generator, trace, read(to), 1u);
   if (!extended)
     throw std::logic_error("vn-layer rounds: an edge of the graph is no step of the model");
 }

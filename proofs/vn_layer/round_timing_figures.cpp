@@ -62,13 +62,14 @@ void add_round_timing_figures(const VnConfig& c, const tioa::Automaton& system,
 
   std::vector<tioa::Word> scratch(gen.words() + 1, 0);
   checker::PropertyLimitPoll poll(options.limits);
+  checker::StateReader read(ex);
   for (checker::StateId v = 0; v < ex.store.size(); ++v) {
     if (poll.reached(v)) {
       r.notes.push_back("the measured figures were not computed: a limit was met while "
                         "they were measured");
       return;
     }
-    const tioa::Word* from = ex.store.state(v);
+    const tioa::Word* from = read(v);
     const tioa::State before(from, 0);
     const int now = before[phase];
     gen.successors(from, scratch.data(), [&](const tioa::Word* to, const tioa::StepLabel& step) {

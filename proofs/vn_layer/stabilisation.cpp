@@ -37,8 +37,9 @@ struct RoundFacts {
 RoundFacts facts_of(const RoundGraph& g, const checker::Exploration& ex, const RoundView& view) {
   const auto q = vlayer_mc::curve_q(view.lattice);
   RoundFacts f;
+  checker::StateReader read(ex);
   for (Node v = 0; v < g.size(); ++v) {
-    const std::vector<int> points = view.points(ex.store.state(g.state[v]));
+    const std::vector<int> points = view.points(read(g.state[v]));
     std::vector<int> zones = points, out = points; // −1 stays for a failed CN
     bool on = true;
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -118,7 +119,7 @@ checker::PropertyResult check_stabilisation(const VnConfig& c, const tioa::Autom
                 "with cn_faults=1 they may happen in any round";
     return r;
   }
-  checker::require_exact_store(options, "stabilisation");
+  checker::require_stored_states(options, "stabilisation");
   const tioa::SuccessorGenerator gen(system);
   checker::ExploreHooks hooks;
   hooks.record_edges = true;
@@ -218,8 +219,9 @@ checker::PropertyResult check_stabilisation(const VnConfig& c, const tioa::Autom
   // is a CN that changes zone where no count does (a swap) or the migration of V4.
   std::uint64_t equal = 0;
   std::int64_t widest = 0;
+  checker::StateReader read(ex);
   for (Node v = 0; v < g.starts; ++v) {
-    const std::uint32_t level = round_level_t_stab(c, view.counts(ex.store.state(g.state[v])));
+    const std::uint32_t level = round_level_t_stab(c, view.counts(read(g.state[v])));
     if (level == stab.worst[v])
       ++equal;
     else if (level != unbounded && stab.worst[v] != unbounded)
@@ -248,7 +250,7 @@ checker::PropertyResult check_stabilisation(const VnConfig& c, const tioa::Autom
   for (Node v = 0; v < g.size(); ++v) {
     if (!can_stay[v])
       continue;
-    const mc::Rational spread = density_spread(view.counts(ex.store.state(g.state[v])), q);
+    const mc::Rational spread = density_spread(view.counts(read(g.state[v])), q);
     widest_spread = std::max(widest_spread, spread);
     if (spread > bound && spread_at == no_node)
       spread_at = v;
@@ -325,7 +327,7 @@ checker::PropertyResult check_stabilisation(const VnConfig& c, const tioa::Autom
     r.message =
         "an execution whose assignment stays fixed from round " + std::to_string(at) +
         " on with |y_h/q_h - y_g/q_g| = " +
-        mc::to_string(density_spread(view.counts(ex.store.state(g.state[spread_at])), q)) +
+        mc::to_string(density_spread(view.counts(read(g.state[spread_at])), q)) +
         " over In, beyond 10(2m-1)/(q_min rho2) = " + mc::to_string(bound) +
         " (Theorem 1(1), Lemma 6, 002:236, 298; trace: " + std::to_string(r.trace->length()) +
         " steps)";

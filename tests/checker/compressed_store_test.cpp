@@ -1,7 +1,7 @@
 // The compressed store (checker/state_tree.hpp, ExploreOptions::store = compressed): the ids,
 // parents, counts, edges and states of the exact store for every thread count, the same
-// traces and verdicts (what holds, holds: the store is exact), and the checks that refuse
-// it.
+// traces and verdicts (what holds, holds: the store is exact), also for the checks that
+// read the stored states after the search.
 #include <catch2/catch.hpp>
 
 #include <stdexcept>
@@ -9,6 +9,7 @@
 
 #include "checker/checks.hpp"
 #include "checker/property.hpp"
+#include "checker/reach.hpp"
 #include "checker/trace.hpp"
 #include "models/fischer/fischer.hpp"
 #include "tests/checker/helpers.hpp"
@@ -204,14 +205,119 @@ TEST_CASE("compressed store: the verdicts of invariants and deadlocks are the ex
   }
 }
 
-TEST_CASE("compressed store: the checks that read states or edges after the search refuse it",
+// `n` counters as wide_counters, each counting up to `wide_top` and stopping there: every
+// execution ends in the state where all are at the top, after n * wide_top steps.
+tioa::Automaton wide_count_up(int n) {
+  tioa::Automaton c("wide-count-up");
+  std::vector<tioa::Variable<int>> x;
+  for (int i = 0; i < n; ++i)
+    x.push_back(c.integer("x" + std::to_string(i), 0, (1 << 30) - 1, 0));
+  for (int i = 0; i < n; ++i) {
+    const auto xi = x[static_cast<std::size_t>(i)];
+    c.internal("inc" + std::to_string(i))
+        .pre([=](const State& s, const Params&) { return s[xi] < wide_top; })
+        .eff([=](State& s, const Params&) { s[xi] = s[xi] + 1; });
+  }
+  return c;
+}
+
+void require_same_trace(const PropertyResult& r, const PropertyResult& exact) {
+  REQUIRE(r.trace.has_value() == exact.trace.has_value());
+  if (!r.trace)
+    return;
+  CHECK(r.trace->loop_start == exact.trace->loop_start);
+  REQUIRE(r.trace->steps.size() == exact.trace->steps.size());
+  for (std::size_t i = 0; i < r.trace->steps.size(); ++i) {
+    CHECK(r.trace->steps[i].action == exact.trace->steps[i].action);
+    CHECK(r.trace->steps[i].state == exact.trace->steps[i].state);
+  }
+}
+
+TEST_CASE("compressed store: the checks that read states or edges after the search give the "
+          "exact store's results",
           "[checker][compressed][checks]") {
-  ExploreOptions options = compressed_options(StoreKind::compressed);
-  CHECK_THROWS_AS(require_exact_store(options, "the legal-set check"), std::invalid_argument);
-  Property stabilisation;
-  stabilisation.name = "stabilises";
-  stabilisation.kind = PropertyKind::stabilisation;
-  stabilisation.predicate = [](const State&) { return true; };
-  CHECK_THROWS_WITH(run_property(wide_counters(2), stabilisation, options),
-                    Catch::Contains("cannot run on the compressed store"));
+  SECTION("stabilisation that holds: the same worst time and witness") {
+    const tioa::Automaton a = wide_count_up(3);
+    const auto x0 = slot_of(a, "x0"), x1 = slot_of(a, "x1"), x2 = slot_of(a, "x2");
+    const tioa::StatePredicate all_top = [&](const State& s) {
+      return s.code(x0) == wide_top && s.code(x1) == wide_top && s.code(x2) == wide_top;
+    };
+    const PropertyResult exact =
+        check_stabilisation(a, all_top, compressed_options(StoreKind::exact));
+    REQUIRE(exact.verdict == Verdict::holds);
+    REQUIRE(exact.worst_time == std::optional<std::uint64_t>(3 * wide_top));
+    for (unsigned threads : {1u, 2u}) {
+      const PropertyResult r =
+          check_stabilisation(a, all_top, compressed_options(StoreKind::compressed, threads));
+      CHECK(r.store == "compressed");
+      CHECK(r.verdict == Verdict::holds);
+      CHECK(r.worst_time == exact.worst_time);
+      CHECK(r.states == exact.states);
+      CHECK(r.edges == exact.edges);
+      CHECK(r.message == exact.message);
+      require_same_trace(r, exact);
+    }
+  }
+  SECTION("stabilisation that fails: the same lasso") {
+    const tioa::Automaton a = wide_counters(3);
+    const auto x0 = slot_of(a, "x0");
+    const tioa::StatePredicate at_zero = [&](const State& s) { return s.code(x0) == 0; };
+    const PropertyResult exact =
+        check_stabilisation(a, at_zero, compressed_options(StoreKind::exact));
+    REQUIRE(exact.verdict == Verdict::violated);
+    REQUIRE(exact.trace);
+    const PropertyResult r =
+        check_stabilisation(a, at_zero, compressed_options(StoreKind::compressed, 2));
+    CHECK(r.verdict == Verdict::violated);
+    CHECK(r.trace_kind == exact.trace_kind);
+    CHECK(r.message == exact.message);
+    require_same_trace(r, exact);
+  }
+  SECTION("run_property takes it for every kind; only the fingerprint store is refused") {
+    Property stabilisation;
+    stabilisation.name = "stabilises";
+    stabilisation.kind = PropertyKind::stabilisation;
+    const auto x0 = slot_of(wide_counters(2), "x0");
+    stabilisation.predicate = [x0](const State& s) { return s.code(x0) <= wide_top; };
+    const PropertyResult r =
+        run_property(wide_counters(2), stabilisation, compressed_options(StoreKind::compressed));
+    CHECK(r.verdict == Verdict::holds);
+    CHECK(r.store == "compressed");
+    CHECK_NOTHROW(require_stored_states(compressed_options(StoreKind::compressed), "a check"));
+    CHECK_THROWS_AS(require_stored_states(compressed_options(StoreKind::fingerprint), "a check"),
+                    std::invalid_argument);
+    CHECK_THROWS_WITH(
+        run_property(wide_counters(2), stabilisation, compressed_options(StoreKind::fingerprint)),
+        Catch::Contains("cannot run on the fingerprint store"));
+  }
+}
+
+TEST_CASE("compressed store: Exploration::find and R(A) see the states the exact store holds",
+          "[checker][compressed]") {
+  const tioa::Automaton a = wide_counters(3);
+  const Exploration exact = explore_with(a, compressed_options(StoreKind::exact));
+  const Exploration compressed = explore_with(a, compressed_options(StoreKind::compressed, 2));
+  std::vector<Word> buffer;
+  bool all_found = true;
+  for (StateId id = 0; id < exact.store.size(); ++id) {
+    const Word* s = exact.store.state(id);
+    all_found = all_found && compressed.find(s) == std::optional<StateId>(id) &&
+                exact.find(s) == std::optional<StateId>(id);
+  }
+  CHECK(all_found);
+  Words absent = stored(exact, 0);
+  State(absent.data(), 0).set_code(slot_of(a, "x1"), wide_top + 1); // never reached
+  CHECK_FALSE(compressed.find(absent.data()));
+  CHECK_FALSE(exact.find(absent.data()));
+  Words huge = stored(exact, 0);
+  State(huge.data(), 0).set_code(slot_of(a, "x1"), (1 << 30) - 1); // a part never stored
+  CHECK_FALSE(compressed.find(huge.data()));
+
+  const tioa::Automaton from_exact = R(a, compressed_options(StoreKind::exact));
+  const tioa::Automaton from_compressed = R(a, compressed_options(StoreKind::compressed));
+  const Exploration again_exact = explore_with(from_exact, compressed_options(StoreKind::exact));
+  const Exploration again =
+      explore_with(from_compressed, compressed_options(StoreKind::compressed));
+  CHECK(again.start_states == exact.store.size());
+  require_as_exact(again_exact, again);
 }
