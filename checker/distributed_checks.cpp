@@ -1,5 +1,8 @@
 #include "checker/distributed_checks.hpp"
 
+#include <iomanip>
+#include <sstream>
+
 #include "checker/distributed_explorer.hpp"
 #include "checker/fingerprint.hpp"
 #include "checker/trace.hpp"
@@ -24,6 +27,16 @@ PropertyResult figures_of(const std::string& kind, const DistributedExploration&
   if (ex.fingerprints) {
     r.store = "fingerprint";
     r.omission_probability = omission_probability(ex.states);
+  }
+  if (ex.compressed) {
+    r.store = "compressed";
+    if (ex.parts > 0) { // (a state of one word is its own key: no tree)
+      std::ostringstream text;
+      text << "compressed store: " << ex.states << " states held as keys into " << ex.parts
+           << " parts in the ranks' trees (" << std::fixed << std::setprecision(1)
+           << static_cast<double>(ex.store_bytes) / (1 << 20) << " MiB over the ranks)";
+      r.notes.push_back(text.str());
+    }
   }
   r.time_unit = generator.timed() ? "quanta" : "steps";
   r.coverage = {Starts::all, ex.start_states, ex.start_states, "the start states", ""};

@@ -69,14 +69,23 @@ template <class Body> void on_threads(std::uint32_t threads, std::uint64_t n, Bo
 //
 // On the fingerprint store (fingerprint.hpp) the store holds each state's fingerprint,
 // and the full states are kept only for the level just numbered (the frontier, from
-// `frontier_begin`) and the level being built, as one process keeps them.
+// `frontier_begin`) and the level being built, as one process keeps them. On the
+// compressed store (state_tree.hpp) it holds each state's key into the rank's tree of
+// parts, and any state is decoded from it.
 struct RankStates {
-  RankStates(std::uint32_t words, std::uint32_t threads, bool fingerprints)
-      : store(fingerprints ? 1 : words), inserters(threads), full_words(fingerprints ? words : 0) {
-    store.set_inserters(threads, 1); // blocks of one id: no holes
+  RankStates(std::uint32_t words, std::uint32_t threads, StoreKind kind)
+      : store(kind == StoreKind::exact || words == 1 ? words : 1), inserters(threads), words(words),
+        full_words(kind == StoreKind::fingerprint ? words : 0) {
+    store.set_inserters(threads, 1);                  // blocks of one id: no holes
+    if (kind == StoreKind::compressed && words > 1) { // (one word is its own key)
+      tree = std::make_unique<StateTree>(words);
+      tree->set_inserters(threads);
+    }
   }
   StateStore store;
+  std::unique_ptr<StateTree> tree; // the compressed store's parts
   std::uint32_t inserters;
+  std::uint32_t words;      // of a state
   std::uint32_t full_words; // the fingerprint store: a state's words (0: the exact store)
   MappedVector<std::uint32_t> id, parent; // (never held twice as they grow)
   MappedVector<StateId> by_id;
@@ -85,15 +94,23 @@ struct RankStates {
   std::vector<Word> level_full, frontier_full; // the fingerprint store's full states
   StateId frontier_begin = 0;                  // the local id of frontier_full's first
 
-  // A state of the frontier (on the exact store, any state).
-  const Word* state(StateId local) const {
-    return full_words ? frontier_full.data() + std::size_t{local - frontier_begin} * full_words
-                      : store.state(local);
+  // A state of the frontier (on the exact and compressed stores, any state), decoded into
+  // `buffer` on the compressed store.
+  const Word* state(StateId local, std::vector<Word>& buffer) const {
+    if (full_words)
+      return frontier_full.data() + std::size_t{local - frontier_begin} * full_words;
+    return tree ? decoded(local, buffer) : store.state(local);
   }
-  // What the store holds for `state` (the state, or its fingerprint in `key`), and the
-  // hash its table and the ranks' partition use.
-  const Word* store_key(const Word* state, std::uint32_t words, Word& key,
-                        std::uint64_t& hash) const {
+  // What the store holds for the state `local` as a state: the state, or on the
+  // fingerprint store its fingerprint.
+  const Word* held(StateId local, std::vector<Word>& buffer) const {
+    return tree ? decoded(local, buffer) : store.state(local);
+  }
+  std::uint32_t held_words() const { return tree ? words : store.words(); }
+  // The hash of `state` that decides its owner and, but on the compressed store, its
+  // place in the owner's table; and what the store holds for it (the state, or its
+  // fingerprint in `key`). On the compressed store the owner makes the key (insert_key).
+  const Word* store_key(const Word* state, Word& key, std::uint64_t& hash) const {
     if (!full_words) {
       hash = hash_state(state, words);
       return state;
@@ -102,6 +119,23 @@ struct RankStates {
     hash = hash_state(&key, 1);
     return &key;
   }
+  // The owner's side: what the store holds for `state`, and its hash in the table. On the
+  // compressed store its key, its new parts put in the tree first; null when a table of
+  // the tree is full (grow_tree(), then again). Thread-safe; `ids`: the tree's scratch
+  // (tree_scratch()).
+  const Word* insert_key(const Word* state, Word& key, std::uint64_t& hash, std::uint32_t* ids) {
+    if (!tree)
+      return store_key(state, key, hash);
+    const std::optional<Word> made = tree->insert(state, ids);
+    if (!made)
+      return nullptr;
+    key = *made;
+    hash = hash_state(&key, 1);
+    return &key;
+  }
+  // Grows the tables of the tree that are (nearly) full. While no thread uses the tree.
+  void grow_tree() { tree->make_room(); }
+  std::size_t tree_scratch() const { return tree ? tree->scratch_size() : 0; }
 
   // Room to insert `more` states, from any number of threads at once.
   void reserve(std::uint64_t more) {
@@ -134,6 +168,13 @@ struct RankStates {
   void close_level() {
     level_key.resize(store.size() - level_begin);
     level_full.resize(level_key.size() * full_words);
+  }
+
+private:
+  const Word* decoded(StateId local, std::vector<Word>& buffer) const {
+    buffer.resize(words);
+    tree->decode(store.state(local)[0], buffer.data());
+    return buffer.data();
   }
 };
 
@@ -200,8 +241,9 @@ std::uint64_t first_target(const RankStates& rs, StateId begin, StateId end,
   if (target)
     on_threads(threads, end - begin, [&](std::uint64_t from, std::uint64_t to) {
       std::uint64_t mine = no_id;
+      std::vector<Word> buffer; // (decoded: the compressed store)
       for (std::uint64_t i = begin + from; i < begin + to; ++i)
-        if (rs.id[i] < mine && target(tioa::State(rs.state(static_cast<StateId>(i)), 0)))
+        if (rs.id[i] < mine && target(tioa::State(rs.state(static_cast<StateId>(i), buffer), 0)))
           mine = rs.id[i];
       std::uint64_t now = found.load();
       while (mine < now && !found.compare_exchange_weak(now, mine)) {
@@ -223,12 +265,13 @@ std::optional<StateId> local_of(const RankStates& rs, std::uint64_t id) {
 // What the stores hold for the states from a start state to `id` (the states, or their
 // fingerprints), asking the owner of each in turn.
 std::vector<std::vector<Word>> path_to(const RankStates& rs, std::uint64_t id, Collective& ranks) {
-  const std::uint32_t words = rs.store.words();
+  const std::uint32_t words = rs.held_words();
   std::vector<std::vector<Word>> path;
+  std::vector<Word> buffer;
   for (;;) {
     std::vector<std::uint8_t> mine;
     if (const auto local = local_of(rs, id)) {
-      append_bytes(mine, rs.store.state(*local), words * sizeof(Word));
+      append_bytes(mine, rs.held(*local, buffer), words * sizeof(Word));
       append_bytes(mine, &rs.parent[*local], 4);
     }
     std::vector<std::uint64_t> sizes;
@@ -305,6 +348,7 @@ struct ExpandPart {
   std::vector<std::vector<std::uint8_t>> to; // per owner: successors and their keys
   std::vector<Word> scratch;
   ZeroTimeReduction::Scratch reduction;
+  std::vector<Word> decoded; // a frontier state (the compressed store)
   std::uint64_t edges = 0, ended = 0, stuck = 0, first_stuck = no_id;
   std::vector<Word> first_stuck_state;
 };
@@ -341,12 +385,9 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
     out.stop = StopReason::state_limit;
     return out;
   }
-  if (options.store == StoreKind::compressed)
-    throw std::invalid_argument("the compressed store does not run distributed yet: use the "
-                                "exact or the fingerprint store under mpirun");
-  const bool fingerprints = options.store == StoreKind::fingerprint;
-  out.fingerprints = fingerprints;
-  RankStates rs(words, threads, fingerprints);
+  out.fingerprints = options.store == StoreKind::fingerprint;
+  out.compressed = options.store == StoreKind::compressed;
+  RankStates rs(words, threads, options.store);
   std::size_t peak = 0;
   RankFailure failure;
 
@@ -436,6 +477,7 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
   std::optional<StopReason> stop;
   {
     std::vector<Word> buffer(words + 1, 0);
+    std::vector<std::uint32_t> tree_ids(rs.tree_scratch());
     std::uint64_t index = 0, targets = 0;
     StateStore::IdBlock ids;
     auto enough = [&]() -> bool {
@@ -455,11 +497,14 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
         const std::uint64_t i = index++;
         Word key_word;
         std::uint64_t hash;
-        const Word* key = rs.store_key(buffer.data(), words, key_word, hash);
+        rs.store_key(buffer.data(), key_word, hash);
         if (owner_of(hash, size) == me)
           failure.guard([&] {
             const std::uint64_t before = rs.store.size();
             rs.reserve(1);
+            const Word* key;
+            while (!(key = rs.insert_key(buffer.data(), key_word, hash, tree_ids.data())))
+              rs.grow_tree();
             rs.offer(key, hash, start_key_bit | i, ids, buffer.data());
             if (rs.store.size() > before && target && target(tioa::State(buffer.data(), 0)))
               ++targets;
@@ -514,14 +559,15 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
               const std::uint64_t k = step_key(id, step++);
               Word key_word;
               std::uint64_t hash;
-              rs.store_key(succ, words, key_word, hash);
+              rs.store_key(succ, key_word, hash);
               auto& t = part.to[static_cast<std::size_t>(owner_of(hash, size))];
               append_bytes(t, succ, words * sizeof(Word));
               append_bytes(t, &k, 8);
             };
+            const Word* here = rs.state(s, part.decoded);
             // As one process expands it (expansion.hpp): the reduction's successors, or all.
             const std::optional<std::size_t> reduced =
-                reduction ? reduction->reduce(rs.state(s), part.reduction) : std::nullopt;
+                reduction ? reduction->reduce(here, part.reduction) : std::nullopt;
             std::size_t n = 0;
             if (reduced) {
               n = *reduced;
@@ -529,19 +575,19 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
                 send(part.reduction.successors.data() + k * words);
             } else {
               n = generator.successors(
-                  rs.state(s), part.scratch.data(),
+                  here, part.scratch.data(),
                   [&](const Word* succ, const tioa::StepLabel&) { send(succ); });
             }
             part.edges += n;
             if (n > 0)
               continue;
-            if (ended && ended(tioa::State(rs.state(s), 0))) {
+            if (ended && ended(tioa::State(here, 0))) {
               ++part.ended;
             } else {
               ++part.stuck;
               if (id < part.first_stuck) { // (its state, for a trace on the fingerprint store)
                 part.first_stuck = id;
-                part.first_stuck_state.assign(rs.state(s), rs.state(s) + words);
+                part.first_stuck_state.assign(here, here + words);
               }
             }
           }
@@ -560,10 +606,16 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
       // Insert what this rank owns, on every thread.
       const std::size_t count = received.size() / record;
       std::atomic<std::uint32_t> next_block{0};
+      // The compressed store: the states whose key found a table of the tree full, inserted
+      // after the tables grow (the order of insertion does not change the ids, which the
+      // discovery keys give).
+      std::vector<std::vector<std::uint64_t>> deferred(threads);
       failure.guard([&] {
         rs.reserve(count);
         on_threads(threads, count, [&](std::uint64_t from, std::uint64_t to) {
-          StateStore::IdBlock& ids = id_blocks[next_block.fetch_add(1)];
+          const std::uint32_t block = next_block.fetch_add(1);
+          StateStore::IdBlock& ids = id_blocks[block];
+          std::vector<std::uint32_t> tree_ids(rs.tree_scratch());
           std::uint64_t hashes[insert_batch];
           Word key_words[insert_batch];
           const Word* keys[insert_batch];
@@ -572,10 +624,15 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
             for (std::uint64_t i = 0; i < n; ++i) {
               const auto* state =
                   reinterpret_cast<const Word*>(received.data() + (at + i) * record);
-              keys[i] = rs.store_key(state, words, key_words[i], hashes[i]);
-              rs.store.prefetch(hashes[i]);
+              keys[i] = rs.insert_key(state, key_words[i], hashes[i], tree_ids.data());
+              if (keys[i])
+                rs.store.prefetch(hashes[i]);
+              else
+                deferred[block].push_back(at + i);
             }
             for (std::uint64_t i = 0; i < n; ++i) {
+              if (!keys[i])
+                continue;
               const std::uint8_t* r = received.data() + (at + i) * record;
               std::uint64_t k;
               std::memcpy(&k, r + words * sizeof(Word), 8);
@@ -583,6 +640,19 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
             }
           }
         });
+        std::vector<std::uint32_t> tree_ids(rs.tree_scratch());
+        for (const std::vector<std::uint64_t>& some : deferred)
+          for (const std::uint64_t at : some) {
+            const std::uint8_t* r = received.data() + at * record;
+            const auto* state = reinterpret_cast<const Word*>(r);
+            Word key_word;
+            std::uint64_t hash, k;
+            const Word* key;
+            while (!(key = rs.insert_key(state, key_word, hash, tree_ids.data())))
+              rs.grow_tree();
+            std::memcpy(&k, r + words * sizeof(Word), 8);
+            rs.offer(key, hash, k, id_blocks[0], state);
+          }
       });
       stop = stop_now();
     }
@@ -621,9 +691,10 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
   if (out.found) {
     out.states = *out.found + 1; // a sequential search stops at the target
     const std::vector<Word>* found_state = nullptr;
-    std::vector<Word> mine;
+    std::vector<Word> mine, buffer;
     if (const auto local = local_of(rs, *out.found)) {
-      mine.assign(rs.state(*local), rs.state(*local) + words); // (the frontier's)
+      const Word* state = rs.state(*local, buffer); // (the frontier's)
+      mine.assign(state, state + words);
       found_state = &mine;
     }
     out.to_found = trace_states(rs, *out.found, found_state, generator, start, ranks);
@@ -634,6 +705,10 @@ DistributedExploration explore_distributed(const tioa::SuccessorGenerator& gener
   if (stop)
     out.stop = *stop;
   out.peak_rank_bytes = ranks.max(std::max<std::uint64_t>(peak, resident_bytes()));
+  if (rs.tree) {
+    out.parts = ranks.sum(rs.tree->parts());
+    out.store_bytes = ranks.sum(rs.store.memory_bytes() + rs.tree->memory_bytes());
+  }
   out.seconds = ranks.max(static_cast<std::uint64_t>(elapsed() * 1e6)) / 1e6;
   return out;
 }

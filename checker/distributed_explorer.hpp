@@ -35,6 +35,12 @@
 // full states of the frontier and of the level being built are kept, as one process
 // keeps them.
 //
+// On the compressed store each rank has its own tree of parts (state_tree.hpp): the owner
+// of a state is that of the state itself, as on the exact store, and the owner makes its
+// key when it inserts it (a state whose parts find a table full waits until the threads
+// are done and the tables have grown); a state of the frontier and of a trace is decoded
+// from its key.
+//
 // Not yet: recorded edges, and the checks built on them.
 
 #include <optional>
@@ -67,6 +73,11 @@ struct DistributedExploration {
   double seconds = 0;
   std::uint32_t threads = 1; // threads in each rank
   bool fingerprints = false; // on the fingerprint store (fingerprint.hpp)
+  bool compressed = false;   // on the compressed store (state_tree.hpp)
+  // The compressed store: the parts the ranks' trees hold, and the bytes of their stores
+  // and trees, summed over the ranks.
+  std::uint64_t parts = 0;
+  std::uint64_t store_bytes = 0;
   std::string failure; // a rank out of memory stopped the run (stop: memory_limit): which, why
   std::size_t peak_rank_bytes = 0; // the largest resident memory of a rank
   bool complete() const { return stop == StopReason::finished || stop == StopReason::found; }

@@ -6,7 +6,9 @@ gives the same JSON result as one process: verdict, message, states, edges, dept
 coverage and trace; only `seconds`, `threads` and `ranks` may differ, and `ranks` must be
 N. One process runs with one thread, each rank with two. A property that does not run
 distributed yet must say so in one line on stderr with exit 2. Three of them also on the
-fingerprint store; and a suite (two models' entries), where an entry that does not run
+fingerprint store, and three on the compressed store (the same result but for the note
+on the parts, which each rank's tree holds apart); and a suite (two models' entries),
+where an entry that does not run
 distributed is reported not run (incomplete) and the others are one process's.
 
 usage: mpi_same.py TIOA_CHECK [--ranks 2 --ranks 4] [--max-states N]
@@ -183,6 +185,39 @@ def main():
     jobs += [lambda m=m, p=p: fingerprint_job(m, p)
              for m, p in [("fischer", "mutex"), ("vlayer-mc", "no-timelock"),
                           ("path-reservation", "mutual-exclusion")]]
+    # The compressed store (each rank a tree of its own): one process's result but for the
+    # note on the parts, which each rank's tree holds apart.
+    def compressed_job(model, prop):
+        out = []
+        command = ["check", model, "--prop", prop, "--store", "compressed", "--json", "-j", "1",
+                   "--max-states", str(args.max_states), "--max-seconds", "20"]
+
+        def without_parts_note(report):
+            found = properties(report)
+            for p in found:
+                notes = p.get("notes", [])
+                p["parts_noted"] = any(n.startswith("compressed store: ") for n in notes)
+                p["notes"] = [n for n in notes if not n.startswith("compressed store: ")]
+            return found
+
+        one = subprocess.run([args.tioa] + command, capture_output=True, text=True, timeout=120)
+        mine = without_parts_note(json.loads(one.stdout))
+        for n in ranks:
+            label = f"{model} {prop} --store compressed -np {n}"
+            run = mpi(n, command)
+            if run.returncode != one.returncode:
+                out.append(("fail", f"{label}: exit {run.returncode}, one process {one.returncode}"))
+                continue
+            theirs = without_parts_note(json.loads(run.stdout))
+            if strip(theirs) != strip(mine) or theirs[0].get("store") != "compressed":
+                out.append(("fail", f"{label}: differs"))
+                continue
+            out.append(("same", f"{label}: {mine[0]['verdict']}, {mine[0]['states']} states"))
+        return out
+
+    jobs += [lambda m=m, p=p: compressed_job(m, p)
+             for m, p in [("path-reservation", "no-collision"), ("fischer", "mutex"),
+                          ("path-reservation", "integrity")]]
     jobs.append(suite_job)
     # Most of a run's time is mpirun starting and ending its ranks, not work: three jobs
     # at a time keep the two cores busy (the results do not depend on the timing: the
