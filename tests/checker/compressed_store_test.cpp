@@ -21,26 +21,6 @@ namespace {
 
 constexpr int wide_top = 5;
 
-// `n` counters of 30 bits each (two to a word, so a word is 2^31 or more once the second
-// counter of it is 2 or more: parts in the tables and parts held as values), each counting
-// up to `wide_top` and back to 0: (wide_top + 1)^n states, none stuck.
-tioa::Automaton wide_counters(int n) {
-  tioa::Automaton c("wide-counters");
-  std::vector<tioa::Variable<int>> x;
-  for (int i = 0; i < n; ++i)
-    x.push_back(c.integer("x" + std::to_string(i), 0, (1 << 30) - 1, 0));
-  for (int i = 0; i < n; ++i) {
-    const auto xi = x[static_cast<std::size_t>(i)];
-    c.internal("inc" + std::to_string(i))
-        .pre([=](const State& s, const Params&) { return s[xi] < wide_top; })
-        .eff([=](State& s, const Params&) { s[xi] = s[xi] + 1; });
-    c.internal("wrap" + std::to_string(i))
-        .pre([=](const State& s, const Params&) { return s[xi] == wide_top; })
-        .eff([=](State& s, const Params&) { s[xi] = 0; });
-  }
-  return c;
-}
-
 ExploreOptions compressed_options(StoreKind store, unsigned threads = 1) {
   ExploreOptions options;
   options.store = store;
@@ -84,7 +64,7 @@ TEST_CASE("compressed store: the ids, parents, counts, edges and states of the e
           "1, 2 and 4 threads",
           "[checker][compressed][threads]") {
   SECTION("six wide counters: three words, levels of thousands of states") {
-    const tioa::Automaton a = wide_counters(6);
+    const tioa::Automaton a = wide_counters(6, wide_top, true);
     REQUIRE(a.words() == 3);
     const Exploration exact = explore_with(a, compressed_options(StoreKind::exact));
     CHECK(exact.store.size() == 46656); // 6^6
@@ -98,7 +78,7 @@ TEST_CASE("compressed store: the ids, parents, counts, edges and states of the e
     }
   }
   SECTION("with every edge recorded") {
-    const tioa::Automaton a = wide_counters(5);
+    const tioa::Automaton a = wide_counters(5, wide_top, true);
     const Exploration exact =
         explore_with(a, compressed_options(StoreKind::exact), hooks().with_edges());
     REQUIRE(exact.edge_targets.size() == exact.edges);
@@ -115,7 +95,7 @@ TEST_CASE("compressed store: the ids, parents, counts, edges and states of the e
     require_as_exact(exact, c);
   }
   SECTION("the state limit, inside a level of more than 4096 states") {
-    const tioa::Automaton a = wide_counters(6);
+    const tioa::Automaton a = wide_counters(6, wide_top, true);
     ExploreOptions options = compressed_options(StoreKind::exact);
     options.limits.max_states = 30000;
     const Exploration exact = explore_with(a, options);
@@ -127,7 +107,7 @@ TEST_CASE("compressed store: the ids, parents, counts, edges and states of the e
     }
   }
   SECTION("the first target, from a level of more than 4096 states, and its trace") {
-    const tioa::Automaton a = wide_counters(6);
+    const tioa::Automaton a = wide_counters(6, wide_top, true);
     const auto x0 = slot_of(a, "x0"), x5 = slot_of(a, "x5");
     ExploreHooks h;
     h.target = [&](const Word* s) {
@@ -154,7 +134,7 @@ TEST_CASE("compressed store: the ids, parents, counts, edges and states of the e
 
 TEST_CASE("compressed store: the verdicts of invariants and deadlocks are the exact store's",
           "[checker][compressed][checks]") {
-  const tioa::Automaton a = wide_counters(4);
+  const tioa::Automaton a = wide_counters(4, wide_top, true);
   const auto x1 = slot_of(a, "x1"), x3 = slot_of(a, "x3");
   SECTION("an invariant that holds holds, with a note on the parts") {
     const tioa::StatePredicate below = [&](const State& s) { return s.code(x1) <= wide_top; };
@@ -205,22 +185,6 @@ TEST_CASE("compressed store: the verdicts of invariants and deadlocks are the ex
   }
 }
 
-// `n` counters as wide_counters, each counting up to `wide_top` and stopping there: every
-// execution ends in the state where all are at the top, after n * wide_top steps.
-tioa::Automaton wide_count_up(int n) {
-  tioa::Automaton c("wide-count-up");
-  std::vector<tioa::Variable<int>> x;
-  for (int i = 0; i < n; ++i)
-    x.push_back(c.integer("x" + std::to_string(i), 0, (1 << 30) - 1, 0));
-  for (int i = 0; i < n; ++i) {
-    const auto xi = x[static_cast<std::size_t>(i)];
-    c.internal("inc" + std::to_string(i))
-        .pre([=](const State& s, const Params&) { return s[xi] < wide_top; })
-        .eff([=](State& s, const Params&) { s[xi] = s[xi] + 1; });
-  }
-  return c;
-}
-
 void require_same_trace(const PropertyResult& r, const PropertyResult& exact) {
   REQUIRE(r.trace.has_value() == exact.trace.has_value());
   if (!r.trace)
@@ -237,7 +201,7 @@ TEST_CASE("compressed store: the checks that read states or edges after the sear
           "exact store's results",
           "[checker][compressed][checks]") {
   SECTION("stabilisation that holds: the same worst time and witness") {
-    const tioa::Automaton a = wide_count_up(3);
+    const tioa::Automaton a = wide_counters(3, wide_top, false);
     const auto x0 = slot_of(a, "x0"), x1 = slot_of(a, "x1"), x2 = slot_of(a, "x2");
     const tioa::StatePredicate all_top = [&](const State& s) {
       return s.code(x0) == wide_top && s.code(x1) == wide_top && s.code(x2) == wide_top;
@@ -259,7 +223,7 @@ TEST_CASE("compressed store: the checks that read states or edges after the sear
     }
   }
   SECTION("stabilisation that fails: the same lasso") {
-    const tioa::Automaton a = wide_counters(3);
+    const tioa::Automaton a = wide_counters(3, wide_top, true);
     const auto x0 = slot_of(a, "x0");
     const tioa::StatePredicate at_zero = [&](const State& s) { return s.code(x0) == 0; };
     const PropertyResult exact =
@@ -277,24 +241,24 @@ TEST_CASE("compressed store: the checks that read states or edges after the sear
     Property stabilisation;
     stabilisation.name = "stabilises";
     stabilisation.kind = PropertyKind::stabilisation;
-    const auto x0 = slot_of(wide_counters(2), "x0");
+    const auto x0 = slot_of(wide_counters(2, wide_top, true), "x0");
     stabilisation.predicate = [x0](const State& s) { return s.code(x0) <= wide_top; };
-    const PropertyResult r =
-        run_property(wide_counters(2), stabilisation, compressed_options(StoreKind::compressed));
+    const PropertyResult r = run_property(wide_counters(2, wide_top, true), stabilisation,
+                                          compressed_options(StoreKind::compressed));
     CHECK(r.verdict == Verdict::holds);
     CHECK(r.store == "compressed");
     CHECK_NOTHROW(require_stored_states(compressed_options(StoreKind::compressed), "a check"));
     CHECK_THROWS_AS(require_stored_states(compressed_options(StoreKind::fingerprint), "a check"),
                     std::invalid_argument);
-    CHECK_THROWS_WITH(
-        run_property(wide_counters(2), stabilisation, compressed_options(StoreKind::fingerprint)),
-        Catch::Contains("cannot run on the fingerprint store"));
+    CHECK_THROWS_WITH(run_property(wide_counters(2, wide_top, true), stabilisation,
+                                   compressed_options(StoreKind::fingerprint)),
+                      Catch::Contains("cannot run on the fingerprint store"));
   }
 }
 
 TEST_CASE("compressed store: Exploration::find and R(A) see the states the exact store holds",
           "[checker][compressed]") {
-  const tioa::Automaton a = wide_counters(3);
+  const tioa::Automaton a = wide_counters(3, wide_top, true);
   const Exploration exact = explore_with(a, compressed_options(StoreKind::exact));
   const Exploration compressed = explore_with(a, compressed_options(StoreKind::compressed, 2));
   std::vector<Word> buffer;

@@ -298,34 +298,16 @@ TEST_CASE("distributed: on the fingerprint store, as one process",
 
 namespace {
 
-constexpr int ranked_top = 40;
-
-// `n` counters of 30 bits each (two to a word: a word of 2^31 or more goes into a table of
+// wide_counters (helpers.hpp) counting to 40: a word of 2^31 or more goes into a table of
 // the compressed store's tree, 41 · 41 of them for the first word, so the tables grow
-// during the run), each counting up to `ranked_top`; with `wrap` back to 0, else it stops.
-tioa::Automaton ranked_wide_counters(int n, bool wrap) {
-  tioa::Automaton c("ranked-wide-counters");
-  std::vector<tioa::Variable<int>> x;
-  for (int i = 0; i < n; ++i)
-    x.push_back(c.integer("x" + std::to_string(i), 0, (1 << 30) - 1, 0));
-  for (int i = 0; i < n; ++i) {
-    const auto xi = x[static_cast<std::size_t>(i)];
-    c.internal("inc" + std::to_string(i))
-        .pre([=](const State& s, const Params&) { return s[xi] < ranked_top; })
-        .eff([=](State& s, const Params&) { s[xi] = s[xi] + 1; });
-    if (wrap)
-      c.internal("wrap" + std::to_string(i))
-          .pre([=](const State& s, const Params&) { return s[xi] == ranked_top; })
-          .eff([=](State& s, const Params&) { s[xi] = 0; });
-  }
-  return c;
-}
+// during the run.
+constexpr int ranked_top = 40;
 
 } // namespace
 
 TEST_CASE("distributed: on the compressed store, as one process", "[checker][distributed][store]") {
-  const tioa::Automaton cycles = ranked_wide_counters(3, true);
-  const tioa::Automaton stops = ranked_wide_counters(3, false);
+  const tioa::Automaton cycles = wide_counters(3, ranked_top, true);
+  const tioa::Automaton stops = wide_counters(3, ranked_top, false);
   const auto x0 = slot_of(cycles, "x0"), x1 = slot_of(cycles, "x1"), x2 = slot_of(cycles, "x2");
   const StatePredicate below_top = [&](const State& s) { return s.code(x0) < ranked_top; };
   const StatePredicate not_all_high = [&](const State& s) {

@@ -73,6 +73,28 @@ inline Words stored(const checker::Exploration& ex, checker::StateId id) {
   return Words(ex.store.state(id), ex.store.state(id) + ex.store.words());
 }
 
+// `n` counters of 30 bits each, two to a word (so a word is 2^31 or more once the second
+// counter of it is 2 or more: wide words, for the compressed store's tables), each counting
+// up by one to `top`; with `wrap`, back from `top` to 0 ((top + 1)^n states, none stuck),
+// else stopping there (every execution ends with all at the top, after n * top steps).
+inline tioa::Automaton wide_counters(int n, int top, bool wrap) {
+  tioa::Automaton c(wrap ? "wide-counters" : "wide-count-up");
+  std::vector<tioa::Variable<int>> x;
+  for (int i = 0; i < n; ++i)
+    x.push_back(c.integer("x" + std::to_string(i), 0, (1 << 30) - 1, 0));
+  for (int i = 0; i < n; ++i) {
+    const auto xi = x[static_cast<std::size_t>(i)];
+    c.internal("inc" + std::to_string(i))
+        .pre([=](const State& s, const Params&) { return s[xi] < top; })
+        .eff([=](State& s, const Params&) { s[xi] = s[xi] + 1; });
+    if (wrap)
+      c.internal("wrap" + std::to_string(i))
+          .pre([=](const State& s, const Params&) { return s[xi] == top; })
+          .eff([=](State& s, const Params&) { s[xi] = 0; });
+  }
+  return c;
+}
+
 // Breadth-first distances from the start states, by a plain search over std::map that
 // shares nothing with the explorer but the one-step semantics.
 inline std::map<Words, std::uint32_t> bfs_depths(const tioa::Automaton& a) {

@@ -133,20 +133,32 @@ def main():
                 f"{p['name']} {p['verdict']} {p['states']}" for p in mine)))
         return out
 
-    # The fingerprint store (a state's owner is that of its fingerprint).
-    def fingerprint_job(model, prop):
+    # Another store: the fingerprint store (a state's owner is that of its fingerprint) or
+    # the compressed store (each rank a tree of its own). One process's result, but for the
+    # compressed store's note on the parts, which each rank's tree holds apart.
+    def store_job(model, prop, store):
         out = []
-        command = ["check", model, "--prop", prop, "--store", "fingerprint", "--json", "-j", "1",
+        command = ["check", model, "--prop", prop, "--store", store, "--json", "-j", "1",
                    "--max-states", str(args.max_states), "--max-seconds", "20"]
+
+        def without_parts_note(report):
+            found = properties(report)
+            for p in found:
+                notes = p.get("notes", [])
+                p["parts_noted"] = any(n.startswith("compressed store: ") for n in notes)
+                p["notes"] = [n for n in notes if not n.startswith("compressed store: ")]
+            return found
+
         one = subprocess.run([args.tioa] + command, capture_output=True, text=True, timeout=120)
-        mine = properties(json.loads(one.stdout))
+        mine = without_parts_note(json.loads(one.stdout))
         for n in ranks:
-            label = f"{model} {prop} --store fingerprint -np {n}"
+            label = f"{model} {prop} --store {store} -np {n}"
             run = mpi(n, command)
             if run.returncode != one.returncode:
                 out.append(("fail", f"{label}: exit {run.returncode}, one process {one.returncode}"))
                 continue
-            if strip(properties(json.loads(run.stdout))) != strip(mine):
+            theirs = without_parts_note(json.loads(run.stdout))
+            if strip(theirs) != strip(mine) or theirs[0].get("store") != store:
                 out.append(("fail", f"{label}: differs"))
                 continue
             out.append(("same", f"{label}: {mine[0]['verdict']}, {mine[0]['states']} states"))
@@ -182,40 +194,10 @@ def main():
 
     jobs = [lambda m=m, p=p: property_job(m, p) for m in models for p in m["properties"]]
     jobs += [lambda m=m: arbitrary_job(m) for m in models]
-    jobs += [lambda m=m, p=p: fingerprint_job(m, p)
+    jobs += [lambda m=m, p=p: store_job(m, p, "fingerprint")
              for m, p in [("fischer", "mutex"), ("vlayer-mc", "no-timelock"),
                           ("path-reservation", "mutual-exclusion")]]
-    # The compressed store (each rank a tree of its own): one process's result but for the
-    # note on the parts, which each rank's tree holds apart.
-    def compressed_job(model, prop):
-        out = []
-        command = ["check", model, "--prop", prop, "--store", "compressed", "--json", "-j", "1",
-                   "--max-states", str(args.max_states), "--max-seconds", "20"]
-
-        def without_parts_note(report):
-            found = properties(report)
-            for p in found:
-                notes = p.get("notes", [])
-                p["parts_noted"] = any(n.startswith("compressed store: ") for n in notes)
-                p["notes"] = [n for n in notes if not n.startswith("compressed store: ")]
-            return found
-
-        one = subprocess.run([args.tioa] + command, capture_output=True, text=True, timeout=120)
-        mine = without_parts_note(json.loads(one.stdout))
-        for n in ranks:
-            label = f"{model} {prop} --store compressed -np {n}"
-            run = mpi(n, command)
-            if run.returncode != one.returncode:
-                out.append(("fail", f"{label}: exit {run.returncode}, one process {one.returncode}"))
-                continue
-            theirs = without_parts_note(json.loads(run.stdout))
-            if strip(theirs) != strip(mine) or theirs[0].get("store") != "compressed":
-                out.append(("fail", f"{label}: differs"))
-                continue
-            out.append(("same", f"{label}: {mine[0]['verdict']}, {mine[0]['states']} states"))
-        return out
-
-    jobs += [lambda m=m, p=p: compressed_job(m, p)
+    jobs += [lambda m=m, p=p: store_job(m, p, "compressed")
              for m, p in [("path-reservation", "no-collision"), ("fischer", "mutex"),
                           ("path-reservation", "integrity")]]
     jobs.append(suite_job)
