@@ -76,7 +76,7 @@ TEST_CASE("vn-emulation, cold start: the VN starts exactly d_r = 4d_p + 5eps aft
 
 TEST_CASE("vn-emulation E1: with two fails a client message reaches the VN later than "
           "d_v = 2d_p + eps",
-          "[vn-emulation][slow]") {
+          "[vn-emulation][slow][long]") {
   checker::ExploreOptions bounded;
   bounded.limits.max_states = 3'000'000; // the trace is 23 steps deep; the whole space is 16M+
   const et::Run r = et::run("theorem-2", {"fails=2", "inputs=ticks"}, bounded);
@@ -160,7 +160,7 @@ TEST_CASE("vn-emulation refines-vn: the monitor sees a replica that leaves the a
 
 TEST_CASE("vn-emulation no-live-restart: with two fails two joiners' resets restart a live VN "
           "(the specification's F4)",
-          "[vn-emulation][slow]") {
+          "[vn-emulation][slow][long]") {
   CHECK(et::run("no-live-restart", {}).result.verdict == checker::Verdict::holds);
   checker::ExploreOptions bounded;
   bounded.limits.max_states = 4'000'000; // the trace is 41 steps deep; the whole space 20M+
