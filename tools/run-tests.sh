@@ -2,8 +2,7 @@
 # Builds and runs the whole test suite (what CI runs, .ci/run):
 #
 # 1. the Release build in build/ with every test under ctest but the opt-in label long: unit,
-#    command line, examples,
-#    the cross-check against the Python reference;
+#    command line, examples, the cross-check against the Python reference;
 # 2. the unit tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer in
 #    build-asan/ (-O1, assertions on), each test binary run whole except the cases tagged
 #    [slow]: exhaustive checks that take over ten seconds there, and that step 1 runs.
