@@ -34,7 +34,9 @@ std::string describe(const EmuConfig& c) {
          ", fails=" + std::to_string(c.fails) +
          ", start=" + (c.start == Start::cold ? "cold" : "warm") +
          ", inputs=" + (c.inputs == Inputs::anywhere ? "anywhere" : "ticks") +
-         (c.vn == Vn::report ? ", vn=report" : "") +
+         (c.vn == Vn::report ? ", vn=report"
+          : c.vn == Vn::mc   ? ", vn=mc"
+                             : "") +
          (c.ties == Ties::content ? ", ties=content (a repair of E4)" : "") +
          (c.reset_joined ? ", reset=joined (a repair of E5)" : "") +
          (c.tobcast_zone_at_delivery ? ", tobcast_zone=delivery" : "") +

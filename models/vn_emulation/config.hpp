@@ -16,8 +16,9 @@ enum class Start { cold, warm };
 enum class Inputs { anywhere, ticks };
 // The VN emulated (D31): the FIFO counter, whose sends come from a queue (Fig. 6's VN
 // sends so), or the "report" VN, whose one pending send carries the current count and
-// last sender, so that every receive changes what is to be sent (F3).
-enum class Vn { fifo, report };
+// last sender, so that every receive changes what is to be sent (F3); or the MC VN of
+// seed 002 Fig. 6 (vn_mc.hpp, README "The MC VN").
+enum class Vn { fifo, report, mc };
 // How TOBcast orders two messages of one timestamp with the same sender and sequence
 // number (a PN that fails and recovers within an instant numbers from 0 again, 002:35):
 // the paper orders by sender and sequence alone (002:348), so each PN's buffer keeps them

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <string>
+#include <tuple>
 
 #include "models/vn_emulation/delivery_monitor.hpp"
 #include "models/vn_emulation/key_set.hpp"
 #include "models/vn_emulation/predicates.hpp"
 #include "models/vn_emulation/refinement.hpp"
+#include "models/vn_emulation/vn_steps.hpp"
 
 namespace vn_emulation {
 
@@ -236,7 +238,7 @@ void tick(const Slots& slots, State& s) {
   }
   for (int h = 0; h < c.zones; ++h) {
     const std::optional<VnValue>& vn = abstract[h];
-    if (vn && vn->can_send()) {
+    if (vn && vn_can_send(slots, *vn)) {
       const bool sent = optional_value(s, slots.task_sseq[h]) != vn->sseq;
       s[slots.task_wait[h]] =
           std::min((sent ? 0 : static_cast<int>(s[slots.task_wait[h]])) + 1, c.age_cap());
@@ -496,14 +498,13 @@ Emulation emulation(const EmuConfig& c) {
     a.internal("init-action" + id)
         .pre([slots, i, status_is](const State& s, const Params&) {
           const PnSlots& q = slots->pns[i];
-          return status_is(s, Status::active) && !s[q.proposed] && s[q.value.length] > 0;
+          return status_is(s, Status::active) && !s[q.proposed] && q.value.can_send(s);
         })
         .eff([slots, i](State& s, const Params&) {
           const PnSlots& q = slots->pns[i];
           Packet suggestion;
           suggestion.kind = Kind::simulate_send;
-          suggestion.count = s[q.value.out_count[0]];
-          suggestion.last = s[q.value.out_last[0]];
+          std::tie(suggestion.count, suggestion.last) = vn_head(*slots, q.value.load(s));
           suggestion.age = 0;
           suggestion.from = i;
           tob_append(*slots, s, i, suggestion);
@@ -530,7 +531,7 @@ Emulation emulation(const EmuConfig& c) {
           const bool client = receive && act.age < 0;
           const Key key{act.age, act.from};
           const bool known = client ? ((done.received >> act.message) & 1) != 0 : done.has(key);
-          const bool enabled = receive || value.send_enabled(act.count, act.last);
+          const bool enabled = receive || vn_send_enabled(*slots, value, act.count, act.last);
           const auto record = [&] {
             if (client)
               done.received |= 1 << act.message;
@@ -538,19 +539,18 @@ Emulation emulation(const EmuConfig& c) {
               slots->exceed(s, i, Bound::keys);
           };
           if (!known && enabled) {
-            if (receive && !client) { // the neighbour's report: nbr := v (§1.7)
-              value.nbr = act.count;
+            if (receive && !client) { // the neighbour's message (§1.7)
+              vn_receive_neighbour(*slots, value, act.count);
               delivery_vn_executed(*slots, s, key);
             } else if (receive) {
-              if (!value.can_receive(slots->config.vn)) {
+              if (!vn_receive(*slots, value, s[q.zone], act.from, act.count)) {
                 slots->exceed(s, i, Bound::out);
                 return;
               }
-              value.receive(act.from, slots->config.vn);
               if (!s.is_bottom(slots->message_wait[act.message]))
                 s.set_bottom(slots->message_wait[act.message]); // first execution: owed no more
             } else {
-              value.send();
+              vn_send(*slots, value);
               Packet message;
               message.kind = Kind::vn_message;
               message.count = act.count;
@@ -579,14 +579,14 @@ Emulation emulation(const EmuConfig& c) {
           const PnSlots& q = slots->pns[i];
           return status_is(s, Status::active) && is_empty(s, q.pending[0]) &&
                  later_id(optional_value(s, q.pending_join), optional_value(s, q.completed_join)) &&
-                 (!slots->config.quiescent_ack || s[q.value.length] == 0);
+                 (!slots->config.quiescent_ack || !q.value.can_send(s));
         })
         .eff([slots, i](State& s, const Params&) {
           const PnSlots& q = slots->pns[i];
           Packet ack;
           ack.kind = Kind::join_ack;
           ack.age = s[q.pending_join];
-          ack.value = q.value.load(s).code(slots->config.pns, slots->config.zones);
+          ack.value = vn_payload(*slots, q.value.load(s));
           ack.done = slots->completed(s, i);
           tob_append(*slots, s, i, ack);
           s[q.completed_join] = s[q.pending_join];
@@ -652,7 +652,7 @@ Emulation emulation(const EmuConfig& c) {
           case Kind::simulate_send:
             if (status == Status::listening || status == Status::active) {
               Packet act = m;
-              act.value = 0;
+              act.value = {};
               act.done = {};
               if (!append(s, q.pending, act))
                 slots->exceed(s, i, Bound::pending);
@@ -671,7 +671,7 @@ Emulation emulation(const EmuConfig& c) {
             const int join_id = optional_value(s, q.join_id);
             if (status == Status::listening && join_id >= 0 && m.age <= join_id) {
               s[q.status] = Status::active;
-              q.value.store(s, VnValue::from_code(m.value, slots->config.pns, slots->config.zones));
+              q.value.store(s, vn_from_payload(*slots, m.value));
               slots->set_completed(s, i, m.done);
               s[q.proposed] = false;
             }
@@ -767,7 +767,8 @@ Emulation emulation(const EmuConfig& c) {
     a.output("cn-send" + id)
         .pre([slots, i, env_may](const State& s, const Params&) {
           const PnSlots& q = slots->pns[i];
-          return env_may(s) && s[q.up] && s[slots->messages_left] > 0 && !s[q.sent_now];
+          return env_may(s) && s[q.up] && s[slots->messages_left] > 0 && !s[q.sent_now] &&
+                 (!q.cn_phase || s[*q.cn_phase] < mc_inputs);
         })
         .eff([slots, i](State& s, const Params&) {
           const int message = slots->config.messages - s[slots->messages_left];
@@ -781,6 +782,13 @@ Emulation emulation(const EmuConfig& c) {
           m.message = message;
           m.from = i;
           m.zone = point_zone(*slots, s, i); // owed by the VN of the CN's zone
+          const PnSlots& q = slots->pns[i];
+          if (q.cn_phase) { // vn=mc: the CN's next message of its round (M1, M2, M7)
+            const auto kind = static_cast<McInput>(static_cast<int>(s[*q.cn_phase]));
+            m.count = slots->mc->client_content(
+                kind, slots->mc->client_location(i, q.point ? static_cast<int>(s[*q.point]) : 0));
+            s[*q.cn_phase] = s[*q.cn_phase] + 1;
+          }
           if (!slots->message_zone.empty())
             s[slots->message_zone[message]] = m.zone;
           lb_send(*slots, s, i, m, 0);

@@ -1,5 +1,7 @@
 #include "models/vn_emulation/predicates.hpp"
 
+#include "models/vn_emulation/vn_steps.hpp"
+
 namespace vn_emulation {
 
 namespace {
@@ -41,13 +43,13 @@ bool pn_urgent(const Slots& slots, const State& s, int i) {
       optional_value(s, p.join_id) == c.restart_age()) // restart
     return true;
   if (status == Status::active) {
-    if ((c.printed_init_action || !s[p.proposed]) && s[p.value.length] > 0) // init-action(send)
+    if ((c.printed_init_action || !s[p.proposed]) && p.value.can_send(s)) // init-action(send)
       return true;
     if (s[p.pending[0].kind] != static_cast<int>(Kind::none)) // simulate-action
       return true;
     const int pending_join = optional_value(s, p.pending_join);
     if (later_id(pending_join, optional_value(s, p.completed_join)) &&
-        (!c.quiescent_ack || s[p.value.length] == 0)) // ack-join
+        (!c.quiescent_ack || !p.value.can_send(s))) // ack-join
       return true;
   }
   if (s[p.tob_out[0].kind] != static_cast<int>(Kind::none)) // TOBcast(m)
@@ -85,7 +87,7 @@ std::optional<VnValue> adoptable_payload(const Slots& slots, const State& s, int
     for (const BufferSlots& b : p.buffer) {
       const Packet packet = b.packet.load(s);
       if (adoptable(packet, join_age))
-        return VnValue::from_code(packet.value, n, slots.config.zones);
+        return vn_from_payload(slots, packet.value);
     }
     for (int i = 0; i < n; ++i)
       for (const FlightSlots& f : slots.pns[i].flight) {
@@ -93,7 +95,7 @@ std::optional<VnValue> adoptable_payload(const Slots& slots, const State& s, int
           continue;
         const Packet packet = f.packet.load(s);
         if (packet.zone == h && adoptable(packet, join_age)) // (TOBcast_j keeps only zone h's)
-          return VnValue::from_code(packet.value, n, slots.config.zones);
+          return vn_from_payload(slots, packet.value);
       }
   }
   return std::nullopt;
@@ -110,16 +112,6 @@ std::optional<VnValue> abstract_value(const Slots& slots, const State& s, int h)
 
 bool vn_alive(const Slots& slots, const State& s, int h) {
   return abstract_value(slots, s, h).has_value();
-}
-
-std::string describe(const VnValue& v) {
-  std::string out;
-  for (int k = 0; k < v.length; ++k)
-    out += (k ? ", " : "") + std::string("<") + std::to_string(v.out_count[k]) + ", CN_" +
-           std::to_string(v.out_last[k]) + ">";
-  return "count " + std::to_string(v.count) + ", last " +
-         (v.last < 0 ? std::string("⊥") : "CN_" + std::to_string(v.last)) + ", out [" + out +
-         "], sseq " + std::to_string(v.sseq);
 }
 
 std::optional<std::string> replica_failure(const Slots& slots, const State& s) {
@@ -140,8 +132,8 @@ std::optional<std::string> replica_failure(const Slots& slots, const State& s) {
     const VnValue a = slots.pns[*first[h]].value.load(s), b = p.value.load(s);
     if (a != b)
       return "the active replicas PN_" + std::to_string(*first[h]) + " and PN_" +
-             std::to_string(i) + " hold different VN states where time passes: (" + describe(a) +
-             ") and (" + describe(b) + ")";
+             std::to_string(i) + " hold different VN states where time passes: (" +
+             describe(slots, a) + ") and (" + describe(slots, b) + ")";
   }
   return std::nullopt;
 }

@@ -40,6 +40,4 @@ std::optional<VnValue> abstract_value(const Slots& slots, const State& s, int h 
 // time cannot pass here.
 std::optional<std::string> replica_failure(const Slots& slots, const State& s);
 
-std::string describe(const VnValue& v);
-
 } // namespace vn_emulation

@@ -4,6 +4,7 @@
 
 #include "models/vn_emulation/key_set.hpp"
 #include "models/vn_emulation/predicates.hpp"
+#include "models/vn_emulation/vn_steps.hpp"
 
 namespace vn_emulation {
 
@@ -13,7 +14,7 @@ namespace {
 // join-ack's payload.
 Entry remembered(const Entry& e) {
   Entry out = e;
-  out.packet.value = 0;
+  out.packet.value = {};
   out.packet.done = {};
   return out;
 }
@@ -59,19 +60,18 @@ Reference replay(const Slots& slots, const State& s, int h) {
     if (m.kind == Kind::simulate_receive && m.age >= 0) { // two zones: the neighbour's report
       const Key id{m.age, m.from};
       if (std::find(ref.done.begin(), ref.done.end(), id) == ref.done.end()) {
-        ref.val.nbr = m.count;
+        vn_receive_neighbour(slots, ref.val, m.count);
         ref.done.push_back(id);
       }
     } else if (m.kind == Kind::simulate_receive) {
-      if (((ref.done_received >> m.message) & 1) == 0 && ref.val.can_receive(slots.config.vn)) {
-        ref.val.receive(m.from, slots.config.vn);
+      if (((ref.done_received >> m.message) & 1) == 0 &&
+          vn_receive(slots, ref.val, h, m.from, m.count))
         ref.done_received |= 1 << m.message;
-      }
     } else if (m.kind == Kind::simulate_send) {
       const Key oid{m.age, m.from};
       if (std::find(ref.done.begin(), ref.done.end(), oid) == ref.done.end() &&
-          ref.val.send_enabled(m.count, m.last)) {
-        ref.val.send();
+          vn_send_enabled(slots, ref.val, m.count, m.last)) {
+        vn_send(slots, ref.val);
         ref.done.push_back(oid);
         ref.sent.push_back(oid);
       }
@@ -175,7 +175,7 @@ std::optional<std::string> refinement_failure(const Slots& slots, const State& s
     const VnValue abstract = replay(slots, s, h).val;
     if (s[r.refused_by] != 0)
       return "PN_" + std::to_string(s[r.refused_by] - 1) + " transmitted a message the abstract " +
-             vn + " did not send (its state: " + describe(abstract) + ")";
+             vn + " did not send (its state: " + describe(slots, abstract) + ")";
     if (urgent(slots, s))
       continue;
     for (int i = 0; i < slots.config.pns; ++i) {
@@ -184,8 +184,8 @@ std::optional<std::string> refinement_failure(const Slots& slots, const State& s
         continue;
       const VnValue held = p.value.load(s);
       if (held != abstract)
-        return "the active replica PN_" + std::to_string(i) + " holds (" + describe(held) +
-               ") where time passes, the abstract " + vn + " (" + describe(abstract) + ")";
+        return "the active replica PN_" + std::to_string(i) + " holds (" + describe(slots, held) +
+               ") where time passes, the abstract " + vn + " (" + describe(slots, abstract) + ")";
     }
   }
   return std::nullopt;

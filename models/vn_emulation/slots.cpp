@@ -16,20 +16,41 @@ Variable<int> age_variable(tioa::Automaton& a, const std::string& name, const Em
   return a.optional_integer(name, 0, c.age_cap());
 }
 
+// The MC VN's fields under `name` (McContext::fields()).
+std::vector<Variable<int>> mc_variables(tioa::Automaton& a, const std::string& name,
+                                        const McContext& mc) {
+  std::vector<Variable<int>> out;
+  for (const McField& f : mc.fields())
+    out.push_back(f.optional ? a.optional_integer(name + "." + f.name, f.lo, f.hi)
+                             : a.integer(name + "." + f.name, f.lo, f.hi, 0));
+  return out;
+}
+
 PacketSlots packet_slots(tioa::Automaton& a, const std::string& name, const EmuConfig& c,
-                         bool payload) {
+                         const McContext* mc, bool payload) {
   const int clients = c.pns;
   PacketSlots p;
   p.kind = a.integer(name + ".kind", 0, kinds - 1, 0);
   p.message = a.integer(name + ".message", 0, std::max(c.messages - 1, 0), 0);
   p.from = a.integer(name + ".from", 0, clients - 1, 0);
-  p.count = a.integer(name + ".count", 0, EmuConfig::counter_modulus - 1, 0);
+  // The content: the counter's ⟨count, last⟩, or with vn=mc one number in count (a client
+  // message's or the VN's, McContext::contents()) and last 0.
+  p.count =
+      a.integer(name + ".count", 0, mc ? mc->contents() - 1 : EmuConfig::counter_modulus - 1, 0);
   p.last = a.integer(name + ".last", 0, clients - 1, 0);
   p.age = age_variable(a, name + ".age", c);
   p.zone = a.integer(name + ".zone", 0, c.zones - 1, 0);
   p.payload = payload;
   if (payload) {
-    p.value = a.integer(name + ".val", 0, VnValue::codes(clients, c.zones) - 1, 0);
+    if (mc) { // a join-ack carries the fields themselves: their code does not fit a number
+      // ⊥ is -1 here, not an optional value, so that a packet with no payload (all 0) is
+      // the declared start value: one state for one situation.
+      for (const McField& f : mc->fields())
+        p.value.push_back(a.integer(name + ".val." + f.name, f.optional ? -1 : f.lo, f.hi, 0));
+      p.value.push_back(a.integer(name + ".val.sseq", 0, EmuConfig::send_modulus - 1, 0));
+    } else {
+      p.value.push_back(a.integer(name + ".val", 0, VnValue::codes(clients, c.zones) - 1, 0));
+    }
     p.received = a.integer(name + ".completed", 0, (1 << c.messages) - 1, 0);
     for (int k = 0; k < EmuConfig::key_capacity; ++k) {
       p.key_age[k] = age_variable(a, at(name + ".key_age", k), c);
@@ -41,16 +62,26 @@ PacketSlots packet_slots(tioa::Automaton& a, const std::string& name, const EmuC
 
 // A TOBcast entry ⟨ts, sender, seq, m⟩ (a hold buffer's place, or one P7's monitor took).
 BufferSlots buffer_slots(tioa::Automaton& a, const std::string& name, const EmuConfig& c,
-                         bool payload) {
-  PacketSlots packet = packet_slots(a, name, c, payload);
+                         const McContext* mc, bool payload) {
+  PacketSlots packet = packet_slots(a, name, c, mc, payload);
   Variable<int> age = age_variable(a, name + ".ts_age", c);
   Variable<int> sender = a.integer(name + ".sender", 0, c.pns - 1, 0);
   return {packet, age, sender, a.integer(name + ".seq", 0, EmuConfig::sequence_capacity, 0)};
 }
 
-ValueSlots value_slots(tioa::Automaton& a, const std::string& name, const EmuConfig& c) {
+ValueSlots value_slots(tioa::Automaton& a, const std::string& name, const EmuConfig& c,
+                       const McContext* mc) {
   const int clients = c.pns;
   ValueSlots v;
+  if (mc) {
+    v.mc = mc_variables(a, name, *mc);
+    v.mc_context = mc;
+    for (std::size_t k = 0; k < mc->fields().size(); ++k)
+      if (mc->fields()[k].name == "buffer[0].kind")
+        v.head_kind = v.mc[k];
+    v.sseq = a.integer(name + ".sseq", 0, EmuConfig::send_modulus - 1, 0);
+    return v;
+  }
   v.count = a.integer(name + ".count", 0, EmuConfig::counter_modulus - 1, 0);
   v.last = a.optional_integer(name + ".last", 0, clients - 1);
   v.length = a.integer(name + ".out_length", 0, EmuConfig::out_capacity, 0);
@@ -96,7 +127,8 @@ Packet PacketSlots::load(const State& s) const {
   p.age = optional_value(s, age);
   p.zone = s[zone];
   if (payload) {
-    p.value = s[value];
+    for (std::size_t k = 0; k < value.size(); ++k)
+      p.value[k] = s[value[k]];
     p.done.received = s[received];
     for (int k = 0; k < EmuConfig::key_capacity; ++k)
       p.done.sends[k] = {optional_value(s, key_age[k]), s[key_from[k]]};
@@ -113,7 +145,8 @@ void PacketSlots::store(State& s, const Packet& p) const {
   set_optional(s, age, p.age);
   s[zone] = p.zone;
   if (payload) {
-    s[value] = p.value;
+    for (std::size_t k = 0; k < value.size(); ++k)
+      s[value[k]] = p.value[k];
     s[received] = p.done.received;
     for (int k = 0; k < EmuConfig::key_capacity; ++k) {
       set_optional(s, key_age[k], p.done.sends[k].age);
@@ -124,6 +157,15 @@ void PacketSlots::store(State& s, const Packet& p) const {
 
 VnValue ValueSlots::load(const State& s) const {
   VnValue v;
+  if (mc_context) {
+    McValues values{};
+    for (std::size_t k = 0; k < mc.size(); ++k)
+      values[k] =
+          mc_context->fields()[k].optional ? optional_value(s, mc[k]) : static_cast<int>(s[mc[k]]);
+    v.mc = mc_context->unflatten(values);
+    v.sseq = s[sseq];
+    return v;
+  }
   v.count = s[count];
   v.last = optional_value(s, last);
   v.length = s[length];
@@ -138,6 +180,17 @@ VnValue ValueSlots::load(const State& s) const {
 }
 
 void ValueSlots::store(State& s, const VnValue& v) const {
+  if (mc_context) {
+    const McValues values = mc_context->flatten(v.mc);
+    for (std::size_t k = 0; k < mc.size(); ++k) {
+      if (mc_context->fields()[k].optional)
+        set_optional(s, mc[k], values[k]);
+      else
+        s[mc[k]] = values[k];
+    }
+    s[sseq] = v.sseq;
+    return;
+  }
   s[count] = v.count;
   set_optional(s, last, v.last);
   s[length] = v.length;
@@ -148,6 +201,12 @@ void ValueSlots::store(State& s, const VnValue& v) const {
   s[sseq] = v.sseq;
   if (nbr)
     set_optional(s, *nbr, v.nbr);
+}
+
+bool ValueSlots::can_send(const State& s) const {
+  if (mc_context) // the head of the send-buffer
+    return s[*head_kind] != static_cast<int>(McSend::none);
+  return s[length] > 0;
 }
 
 Completed Slots::completed(const State& s, int pn) const {
@@ -199,15 +258,14 @@ const char* to_string(Bound bound) {
   return names[static_cast<int>(bound)];
 }
 
-std::array<int, 9 + 2 * EmuConfig::key_capacity> content_order(const Packet& p) {
-  std::array<int, 9 + 2 * EmuConfig::key_capacity> fields{
-      static_cast<int>(p.kind), p.message, p.from, p.count, p.last, p.zone, p.age, p.value,
-      p.done.received};
+ContentOrder content_order(const Packet& p) {
+  std::array<int, 8 + 2 * EmuConfig::key_capacity> fields{
+      static_cast<int>(p.kind), p.message, p.from, p.count, p.last, p.zone, p.age, p.done.received};
   for (int k = 0; k < EmuConfig::key_capacity; ++k) {
-    fields[9 + 2 * k] = p.done.sends[k].age;
-    fields[10 + 2 * k] = p.done.sends[k].from;
+    fields[8 + 2 * k] = p.done.sends[k].age;
+    fields[9 + 2 * k] = p.done.sends[k].from;
   }
-  return fields;
+  return {fields, p.value};
 }
 
 bool Slots::past_bound(const State& s) const {
@@ -224,6 +282,9 @@ Bound Slots::bound_met(const State& s) const {
 std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
   auto slots = std::make_shared<Slots>();
   slots->config = c;
+  if (c.vn == Vn::mc)
+    slots->mc = std::make_shared<const McContext>(c);
+  const McContext* mc = slots->mc.get();
   const bool warm = c.start == Start::warm;
   for (int i = 0; i < c.pns; ++i) {
     const std::string pn = "PN_" + std::to_string(i);
@@ -234,7 +295,7 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
                                      Status::active);
     p.zone =
         a.optional_integer(pn + ".h", 0, c.zones - 1, warm ? std::optional<int>(0) : std::nullopt);
-    p.value = value_slots(a, pn + ".val", c);
+    p.value = value_slots(a, pn + ".val", c, mc);
     p.pending_join = age_variable(a, pn + ".pending_join", c);
     p.completed_join = age_variable(a, pn + ".completed_join", c);
     p.join_id = age_variable(a, pn + ".join_id", c);
@@ -246,20 +307,22 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
       p.key_from[k] = a.integer(at(pn + ".key_from", k), 0, c.pns - 1, 0);
     }
     for (int k = 0; k < EmuConfig::pending_capacity; ++k)
-      p.pending.push_back(packet_slots(a, at(pn + ".pending", k), c, false));
+      p.pending.push_back(packet_slots(a, at(pn + ".pending", k), c, mc, false));
     for (int k = 0; k < EmuConfig::tob_out_capacity; ++k)
-      p.tob_out.push_back(packet_slots(a, at(pn + ".tob_out", k), c, true));
+      p.tob_out.push_back(packet_slots(a, at(pn + ".tob_out", k), c, mc, true));
     for (int k = 0; k < EmuConfig::local_out_capacity; ++k)
-      p.local_out.push_back(packet_slots(a, at(pn + ".local_out", k), c, false));
+      p.local_out.push_back(packet_slots(a, at(pn + ".local_out", k), c, mc, false));
     p.sequence = a.integer(pn + ".seq", 0, EmuConfig::sequence_capacity, 0);
     for (int k = 0; k < c.buffer; ++k) {
-      p.buffer.push_back(buffer_slots(a, at(pn + ".buffer", k), c, true));
+      p.buffer.push_back(buffer_slots(a, at(pn + ".buffer", k), c, mc, true));
     }
     for (int k = 0; k < EmuConfig::seen_capacity; ++k) {
       p.seen_age[k] = age_variable(a, at(pn + ".seen_age", k), c);
       p.seen_from[k] = a.integer(at(pn + ".seen_from", k), 0, c.pns - 1, 0);
     }
     p.sent_now = a.boolean(pn + ".sent_now", false);
+    if (mc)
+      p.cn_phase = a.integer(pn + ".cn_phase", 0, mc_inputs, 0);
     p.startup_wait = a.integer(pn + ".startup_wait", 0, 2 * c.stated_d_r(), 0);
     p.bound_met =
         a.enumeration<Bound>(pn + ".bound_met",
@@ -280,7 +343,7 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
     p.flight_block.offset = a.layout().bits();
     for (int k = 0; k < EmuConfig::flight_capacity; ++k) {
       const std::string name = at("LBcast.from_" + std::to_string(i), k);
-      FlightSlots f{packet_slots(a, name, c, true), a.integer(name + ".elapsed", 0, c.d_p, 0),
+      FlightSlots f{packet_slots(a, name, c, mc, true), a.integer(name + ".elapsed", 0, c.d_p, 0),
                     a.integer(name + ".todo", 0, (1 << c.pns) - 1, 0),
                     a.integer(name + ".seq", 0, EmuConfig::sequence_capacity, 0), std::nullopt};
       if (c.zones == 2)
@@ -331,14 +394,14 @@ std::shared_ptr<const Slots> declare(tioa::Automaton& a, const EmuConfig& c) {
       const std::string m = h == 0 ? "Monitor." : "Monitor_1.";
       RefinementSlots r;
       r.block.offset = a.layout().bits();
-      r.abstract = value_slots(a, m + "val_abs", c);
+      r.abstract = value_slots(a, m + "val_abs", c, mc);
       r.done_received = a.integer(m + "done_received", 0, (1 << c.messages) - 1, 0);
       for (int k = 0; k < EmuConfig::key_capacity; ++k) {
         r.done_age[k] = age_variable(a, at(m + "done_age", k), c);
         r.done_from[k] = a.integer(at(m + "done_from", k), 0, c.pns - 1, 0);
       }
       for (int k = 0; k < c.buffer; ++k) {
-        r.taken.push_back(buffer_slots(a, at(m + "taken", k), c, false));
+        r.taken.push_back(buffer_slots(a, at(m + "taken", k), c, mc, false));
       }
       for (int k = 0; k < EmuConfig::sent_capacity; ++k) {
         r.sent_age[k] = age_variable(a, at(m + "sent_age", k), c);

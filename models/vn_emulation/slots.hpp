@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "models/vn_emulation/config.hpp"
@@ -58,6 +59,10 @@ struct Completed {
   bool add(const Key& k);
 };
 
+// A join-ack's payload val as whole numbers (vn_steps.hpp): the counter's code, or the MC
+// VN's fields and its sseq.
+using Payload = std::array<int, max_mc_fields + 1>;
+
 struct Packet {
   Kind kind = Kind::none;
   int message = 0, from = 0, count = 0, last = 0;
@@ -65,9 +70,9 @@ struct Packet {
   // client message (its CN's zone at the send) or of a VN message (its VN's). Always 0
   // with one zone.
   int zone = 0;
-  int age = -1;   // the oid's or id's age; -1 when it has none
-  int value = 0;  // join-ack: VnValue::code of the payload's val
-  Completed done; // join-ack: the payload's completed-actions
+  int age = -1;    // the oid's or id's age; -1 when it has none
+  Payload value{}; // join-ack: the payload's val (vn_payload)
+  Completed done;  // join-ack: the payload's completed-actions
   bool operator==(const Packet&) const = default;
   bool empty() const { return kind == Kind::none; }
 };
@@ -76,7 +81,8 @@ struct PacketSlots {
   Variable<int> kind, message, from, count, last, age, zone;
   // Only where join-acks can be (TOBcast-out, LBcast, TOBcast's buffer).
   bool payload = false;
-  Variable<int> value, received;
+  std::vector<Variable<int>> value; // Payload's numbers (⊥ is -1, a value of the range)
+  Variable<int> received;
   std::array<Variable<int>, EmuConfig::key_capacity> key_age, key_from;
 
   Packet load(const State& s) const;
@@ -110,7 +116,8 @@ inline auto tag_order(const Entry& e) {
   return std::make_tuple(-e.age, e.packet.kind == Kind::join_req, e.sender, e.sequence);
 }
 // A packet's content as one sortable value, to order two messages with one tag (E4).
-std::array<int, 9 + 2 * EmuConfig::key_capacity> content_order(const Packet& p);
+using ContentOrder = std::pair<std::array<int, 8 + 2 * EmuConfig::key_capacity>, Payload>;
+ContentOrder content_order(const Packet& p);
 // x before y in TOBcast's order; two entries with one tag by their content when
 // `by_content`, else neither before the other.
 inline bool delivered_before(const Entry& x, const Entry& y, bool by_content) {
@@ -121,13 +128,19 @@ inline bool delivered_before(const Entry& x, const Entry& y, bool by_content) {
 // A TOBcast buffer's entries (or P7's taken messages), loaded whole.
 using Entries = tioa::FixedList<Entry, EmuConfig::max_buffer_capacity>;
 
-// VN_h's state as a replica holds it.
+// VN_h's state as a replica holds it: the counter's variables, or with vn=mc the MC VN's
+// (McContext::fields(), in `mc`) and sseq.
 struct ValueSlots {
   Variable<int> count, last, length, sseq;
   std::array<Variable<int>, EmuConfig::out_capacity> out_count, out_last;
   std::optional<Variable<int>> nbr; // two zones
+  std::vector<Variable<int>> mc;
+  std::optional<Variable<int>> head_kind; // mc's buffer[0].kind
+  const McContext* mc_context = nullptr;  // vn=mc (owned by Slots::mc)
   VnValue load(const State& s) const;
   void store(State& s, const VnValue& v) const;
+  // The VN has a send to make (δ(val, ⟨send, m⟩) ≠ ⊥ for some m), read in place.
+  bool can_send(const State& s) const;
 };
 
 enum class Status { idle, joining, listening, active }; // D1: idle is used, not declared
@@ -173,6 +186,8 @@ struct PnSlots {
   std::vector<FlightSlots> flight;    // LBcast: this PN's packets in flight
   std::array<Variable<int>, EmuConfig::seen_capacity> seen_age, seen_from; // CN_i (D16)
   Variable<bool> sent_now; // CN_i has sent in this instant (§1.6)
+  // vn=mc: how many of its round's three messages CN_i has sent (M1, M7).
+  std::optional<Variable<int>> cn_phase;
   // Theorem 2's monitors (ghosts, §3.2): quanta PN_i has stood in a zone whose VN is failed.
   Variable<int> startup_wait;
   // The model's bound that one of this PN's steps met (Bound::none: none). Kept per PN so
@@ -226,6 +241,7 @@ struct DeliverySlots {
 
 struct Slots {
   EmuConfig config;
+  std::shared_ptr<const McContext> mc; // the MC VN's δ, with vn=mc
   std::vector<PnSlots> pns;
   Variable<int> messages_left, fails_left;
   std::optional<Variable<int>> moves_left; // two zones

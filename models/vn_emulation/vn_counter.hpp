@@ -14,10 +14,14 @@
 // holds at most one entry, the current ⟨count, last⟩, marked after each receive and
 // cleared by the send, so that a receive changes what the pending send carries (the
 // prototype's (count, last, dirty, sseq), docs/design/vn-emulation-prototype).
+//
+// With Vn::mc (`vn=mc`) the VN is the MC VN of vn_mc.hpp: its state is `mc`, and of the
+// counter's fields only sseq is used (M6). vn_steps.hpp runs whichever VN an instance has.
 
 #include <array>
 
 #include "models/vn_emulation/config.hpp"
+#include "models/vn_emulation/vn_mc.hpp"
 
 namespace vn_emulation {
 
@@ -31,6 +35,7 @@ struct VnValue {
   // (the specification's "nbr", §1.7: input receive(⟨report, v⟩ from VN_g): nbr := v; no
   // reply, so there is no ping-pong).
   int nbr = -1;
+  McVn mc; // vn=mc
 
   bool operator==(const VnValue&) const = default;
 

@@ -332,3 +332,20 @@ TEST_CASE("vn-emulation on the fingerprint store: a model bound met is found and
   CHECK(checker::replay(tioa::SuccessorGenerator(r.system), *r.result.trace, &why));
   INFO(why);
 }
+
+TEST_CASE("vn-emulation with the MC VN (vn=mc): the replicas agree, the abstract VN is "
+          "implemented and Theorem 2's figures hold",
+          "[vn-emulation]") {
+  // One fail, one message (a cn-update): counts pinned.
+  const auto replicas = et::run("replica-consistency", {"vn=mc"}).result;
+  CHECK(replicas.verdict == checker::Verdict::holds);
+  CHECK(replicas.states == 43'138);
+  CHECK(et::run("refines-vn", {"vn=mc"}).result.verdict == checker::Verdict::holds);
+  // One PN whose CN sends its round's three messages: the VN sends a vn-update and then a
+  // target-update, each task within d_MMT, and the target-update reaches the client.
+  const auto theorem = et::run("theorem-2", {"vn=mc", "pns=1", "messages=3", "fails=0"}).result;
+  CHECK(theorem.verdict == checker::Verdict::holds);
+  CHECK(theorem.states == 2'370);
+  CHECK(et::figure(theorem, "d_MMT measured") == "2");
+  CHECK(et::figure(theorem, "d_v VN -> CN measured") == "1");
+}
