@@ -4,13 +4,14 @@
 // as the function δ a VNE executes. It is vn-layer's VN (models/vn_layer/vn.cpp, decisions
 // C1–C32 of docs/design/vn-layer.md) without what the emulation supplies itself: no
 // `failed` flag (a failed VN is one no VNE holds), no MMT clock (the send task is the
-// VNE's, measured by theorem-2's d_MMT) and no observers. Its decisions, M1–M6, are in
+// VNE's, measured by theorem-2's d_MMT) and no observers. Its decisions, M1–M7, are in
 // the README.
 //
 // M1 One round. A CN sends its round's three messages in Fig. 5's order (cn-update,
 //    exchange-trigger, target-trigger) as the environment chooses, within the budget
 //    `messages` (at most 3), so every message is of round 1 (round 0 is skipped, C12):
-//    rounds are stored as 0 (round 0, "never") or 1.
+//    rounds are stored as 0 (round 0, "never") or 1. M7: a fail does not restart a CN's
+//    round (its next message is the one after its last; emulation.cpp, cn-send).
 // M2 Where a CN is: with two zones its PN's lattice point x_i (the emulation's 4 × 2
 //    points are vlayer-mc's lattice points (x, y) of a 1 × 2 grid with b = 2); with one
 //    zone, which has no geometry, CN_i stands at (i mod 2, i div 2) of a 1 × 1 grid.
