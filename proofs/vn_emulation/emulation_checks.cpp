@@ -85,13 +85,14 @@ std::optional<StateId> first_state_where(const checker::Exploration& ex,
 }
 
 // Explores the emulation and finds the first state where `failure` (when given) finds
-// something. On the exact store (and the compressed one, which decodes them) every reached
-// state is read after the search, in breadth-first order. The fingerprint store keeps no
-// states after the search, so there the failure is the search's target (it stops at the
-// first one, the first in breadth-first order as well), and the states past a bound are
-// noted as the search meets them: the trace to one is then to the one with the least
-// fingerprint, not the nearest. There `watch` (when given) reads every state the search
-// meets, but the one it stops at.
+// something: the failure is the search's target on every store, so the search stops at the
+// first one (the first in breadth-first order, for every thread count) and a violation
+// deep in a large instance comes as soon as the search reaches it, not after the whole
+// space. On the exact store (and the compressed one, which decodes them) the states past a
+// bound are read after the search, in breadth-first order. The fingerprint store keeps no
+// states after the search, so there they are noted as the search meets them: the trace to
+// one is then to the one with the least fingerprint, not the nearest. There `watch` (when
+// given) reads every state the search meets, but the one it stops at.
 Run explore_emulation(const Emulation& e, const checker::ExploreOptions& options,
                       const std::string& name, const Failure& failure = {},
                       const Watch& watch = {}) {
@@ -116,7 +117,7 @@ Run explore_emulation(const Emulation& e, const checker::ExploreOptions& options
       past_bound->note(checker::fingerprint(w, words));
     return false;
   };
-  if (fingerprints && failure)
+  if (failure)
     hooks.target = [&failure](const tioa::Word* w) {
       return failure(tioa::State(w, 0)).has_value();
     };
@@ -126,26 +127,23 @@ Run explore_emulation(const Emulation& e, const checker::ExploreOptions& options
   r.name = name;
   r.notes.push_back("instance: " + describe(slots->config));
   Run run{std::move(generator), std::move(ex), std::move(r), std::nullopt, std::nullopt, ""};
+  if (run.ex.found) {
+    run.failed = run.ex.found;
+    std::vector<tioa::Word> buffer;
+    const tioa::Word* found =
+        run.ex.found_state.empty() ? run.ex.state(*run.failed, buffer) : run.ex.found_state.data();
+    run.why = failure(tioa::State(found, 0)).value_or("");
+  }
   if (fingerprints) {
     if (past_bound->met) {
       const std::uint64_t key = past_bound->least.load();
       run.first_past_bound = run.ex.store.find(&key, checker::hash_state(&key, 1));
     }
-    if (run.ex.found) {
-      run.failed = run.ex.found;
-      run.why = failure(tioa::State(run.ex.found_state.data(), 0)).value_or("");
-    }
     return run;
   }
-  run.first_past_bound =
-      first_state_where(run.ex, [&](const tioa::State& s) { return slots->past_bound(s); });
-  if (failure)
-    run.failed =
-        first_state_where(run.ex, [&](const tioa::State& s) { return failure(s).has_value(); });
-  if (run.failed) {
-    std::vector<tioa::Word> buffer;
-    run.why = failure(tioa::State(run.ex.state(*run.failed, buffer), 0)).value_or("");
-  }
+  if (!run.failed)
+    run.first_past_bound =
+        first_state_where(run.ex, [&](const tioa::State& s) { return slots->past_bound(s); });
   return run;
 }
 
