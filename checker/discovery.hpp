@@ -77,8 +77,9 @@ public:
 
   // The states among ids first.. first + count - 1 (holes left out) in key order, given
   // that their parents are in [parents_begin, parents_end). A counting sort by parent,
-  // then by step.
-  std::vector<StateId> order(std::uint64_t count, StateId parents_begin, StateId parents_end) const;
+  // then by step, shared by `threads` threads (the same order for any number).
+  std::vector<StateId> order(std::uint64_t count, StateId parents_begin, StateId parents_end,
+                             std::uint32_t threads = 1) const;
   // The states among ids first.. first + count - 1 with the holes filled by the last
   // states, the others where they are: an order that moves few states, in no key order.
   std::vector<StateId> dense_order(std::uint64_t count) const;

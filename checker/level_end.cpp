@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "checker/parallel_for.hpp"
+
 namespace checker {
 
 std::size_t renumbering_bytes(std::uint64_t count, std::uint64_t parents) {
@@ -46,11 +48,14 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
       budget.note(budget.held() + bytes);
       stop = StopReason::memory_limit;
     }
-    order =
-        cut_short ? discovery.dense_order(count) : discovery.order(count, level.begin, level.end);
+    const auto threads = static_cast<std::uint32_t>(workers.size());
+    order = cut_short ? discovery.dense_order(count)
+                      : discovery.order(count, level.begin, level.end, threads);
     renumbered.resize(count);
-    for (std::size_t i = 0; i < order.size(); ++i)
-      renumbered[order[i] - first] = static_cast<StateId>(first + i);
+    parallel_for(threads, order.size(), [&](std::uint64_t begin, std::uint64_t end) {
+      for (std::uint64_t i = begin; i < end; ++i)
+        renumbered[order[i] - first] = static_cast<StateId>(first + i);
+    });
     if (level.states)
       level.states->reorder(order, count);
     count = order.size();
@@ -60,8 +65,13 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
       ex.store.reorder(first, order, discovery.slots(), in_place);
     if (!budget.grow_within(ex.parent, count))
       return StopReason::memory_limit;
-    for (std::size_t i = 0; i < count; ++i)
-      ex.parent.push_back(Discovery::parent_of(discovery.key_of(order[i])));
+    const std::size_t parents_before = ex.parent.size();
+    ex.parent.resize(parents_before + count);
+    StateId* parent = ex.parent.data() + parents_before;
+    parallel_for(threads, count, [&](std::uint64_t begin, std::uint64_t end) {
+      for (std::uint64_t i = begin; i < end; ++i)
+        parent[i] = Discovery::parent_of(discovery.key_of(order[i]));
+    });
   }
   auto new_id = [&](StateId id) {
     return renumbered.empty() || id < first ? id : renumbered[id - first];

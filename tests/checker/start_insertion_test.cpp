@@ -28,13 +28,13 @@ std::vector<Word> range(Word n) {
   return out;
 }
 
-struct Run {
+struct StartRun {
   Exploration ex{1};
   MemoryBudget budget{0, [this] { return ex.memory_bytes(); }};
   Insertion insertion;
   std::vector<bool> batches; // after_batch(stopped), in order
 
-  explicit Run(std::uint64_t max_states = 0) : insertion(ex, budget, max_states) {}
+  explicit StartRun(std::uint64_t max_states = 0) : insertion(ex, budget, max_states) {}
 
   template <class Hooks>
   std::optional<StopReason> insert(const tioa::StartSet& start, const Hooks& hooks,
@@ -50,7 +50,7 @@ struct Run {
 
 TEST_CASE("start insertion: level 0 in enumeration order, duplicates once",
           "[checker][start_insertion]") {
-  Run run;
+  StartRun run;
   CHECK_FALSE(run.insert(numbers({5, 3, 5, 8, 3}), hooks()));
   CHECK(run.ex.start_states == 3);
   CHECK(run.ex.store.size() == 3);
@@ -63,12 +63,12 @@ TEST_CASE("start insertion: level 0 in enumeration order, duplicates once",
 
 TEST_CASE("start insertion: batches of start_batch states, each followed by the checks",
           "[checker][start_insertion]") {
-  Run run;
+  StartRun run;
   CHECK_FALSE(run.insert(numbers(range(2 * start_batch + 1)), hooks()));
   CHECK(run.ex.start_states == 2 * start_batch + 1);
   CHECK(run.batches == std::vector<bool>{false, false, false});
   SECTION("the checks may stop the run, which ends the enumeration") {
-    Run stopped;
+    StartRun stopped;
     CHECK(stopped.insert(numbers(range(2 * start_batch + 1)), hooks(), StopReason::time_limit) ==
           StopReason::time_limit);
     CHECK(stopped.ex.start_states == start_batch);
@@ -79,14 +79,14 @@ TEST_CASE("start insertion: batches of start_batch states, each followed by the 
 TEST_CASE("start insertion: the canonical hook, the target and the state limit",
           "[checker][start_insertion]") {
   SECTION("canonical: one state per class, the first of each in order") {
-    Run run;
+    StartRun run;
     run.insert(numbers({4, 7, 2, 9}), hooks().with_canonical([](Word* w) { w[0] %= 2; }));
     CHECK(run.ex.start_states == 2);
     CHECK(*run.ex.store.state(0) == 0);
     CHECK(*run.ex.store.state(1) == 1);
   }
   SECTION("target: the first new start state where it holds") {
-    Run run;
+    StartRun run;
     const auto stop = run.insert(numbers({1, 3, 4, 6}),
                                  hooks().with_target([](const Word* w) { return *w % 2 == 0; }));
     CHECK(stop == StopReason::found);
@@ -95,7 +95,7 @@ TEST_CASE("start insertion: the canonical hook, the target and the state limit",
     CHECK(run.batches == std::vector<bool>{true}); // told the run has stopped
   }
   SECTION("state limit") {
-    Run run(2);
+    StartRun run(2);
     CHECK(run.insert(numbers({1, 2, 1, 3, 4}), hooks()) == StopReason::state_limit);
     CHECK(run.ex.start_states == 2);
   }
