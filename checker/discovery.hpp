@@ -12,10 +12,12 @@
 
 #include <atomic>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "checker/mapped_memory.hpp"
 #include "checker/state_store.hpp"
+#include "checker/uninitialised.hpp"
 
 namespace checker {
 
@@ -68,6 +70,13 @@ public:
     }
   }
   std::uint64_t key_of(StateId id) const { return keys_[id - first_]; }
+  // The keys' memory, for a level's renumbering to move its states through once every
+  // key has been read (order() and the parents taken): `words` words, or empty when it
+  // holds fewer. Its pages were written by this level already, so using it costs no
+  // fresh page, as a new buffer would at every level. The keys are garbage afterwards.
+  std::span<Word> spent_keys(std::uint64_t words) {
+    return words <= keys_.capacity() ? std::span<Word>(keys_.data(), words) : std::span<Word>();
+  }
   // Ids from first on that no state has (yet): a worker's id block when it takes it.
   void holes(std::uint64_t begin, std::uint64_t end) {
     for (std::uint64_t id = begin; id < end; ++id)
@@ -78,11 +87,11 @@ public:
   // The states among ids first.. first + count - 1 (holes left out) in key order, given
   // that their parents are in [parents_begin, parents_end). A counting sort by parent,
   // then by step, shared by `threads` threads (the same order for any number).
-  std::vector<StateId> order(std::uint64_t count, StateId parents_begin, StateId parents_end,
-                             std::uint32_t threads = 1) const;
+  UninitialisedVector<StateId> order(std::uint64_t count, StateId parents_begin,
+                                     StateId parents_end, std::uint32_t threads = 1) const;
   // The states among ids first.. first + count - 1 with the holes filled by the last
   // states, the others where they are: an order that moves few states, in no key order.
-  std::vector<StateId> dense_order(std::uint64_t count) const;
+  UninitialisedVector<StateId> dense_order(std::uint64_t count) const;
   // What order() allocates.
   static std::size_t order_bytes(std::uint64_t count, std::uint64_t parents) {
     return (count + parents + 1) * sizeof(StateId);

@@ -25,8 +25,8 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
   std::uint64_t count = ex.store.size() - first; // holes included, until renumbered
 
   // Breadth-first ids: the new id of the state that had id first + t (empty: the same).
-  std::vector<StateId> renumbered;
-  std::vector<StateId> order;
+  UninitialisedVector<StateId> renumbered; // (the holes' entries are never read)
+  UninitialisedVector<StateId> order;
   bool target = false;
   for (const Worker& w : workers)
     target = target || !w.targets.empty();
@@ -58,20 +58,27 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
     });
     if (level.states)
       level.states->reorder(order, count);
+    const std::uint64_t held = count; // holes included
     count = order.size();
+    // The parents first: the keys are read then, and their memory takes the copy of the
+    // level that the store's renumbering moves its states through.
+    const bool parents_fit = budget.grow_within(ex.parent, count);
+    if (parents_fit) {
+      const std::size_t parents_before = ex.parent.size();
+      ex.parent.resize(parents_before + count);
+      StateId* parent = ex.parent.data() + parents_before;
+      parallel_for(threads, count, [&](std::uint64_t begin, std::uint64_t end) {
+        for (std::uint64_t i = begin; i < end; ++i)
+          parent[i] = Discovery::parent_of(discovery.key_of(order[i]));
+      });
+    }
     if (cut_short)
       ex.store.fill_holes(first, order, discovery.slots());
     else
-      ex.store.reorder(first, order, discovery.slots(), in_place);
-    if (!budget.grow_within(ex.parent, count))
+      ex.store.reorder(first, order, discovery.slots(), in_place,
+                       discovery.spent_keys(held * ex.store.words()));
+    if (!parents_fit)
       return StopReason::memory_limit;
-    const std::size_t parents_before = ex.parent.size();
-    ex.parent.resize(parents_before + count);
-    StateId* parent = ex.parent.data() + parents_before;
-    parallel_for(threads, count, [&](std::uint64_t begin, std::uint64_t end) {
-      for (std::uint64_t i = begin; i < end; ++i)
-        parent[i] = Discovery::parent_of(discovery.key_of(order[i]));
-    });
   }
   auto new_id = [&](StateId id) {
     return renumbered.empty() || id < first ? id : renumbered[id - first];

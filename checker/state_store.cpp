@@ -145,7 +145,7 @@ std::uint32_t StateStore::slot_of(StateId id) const {
 }
 
 void StateStore::reorder(StateId first, std::span<const StateId> order, const std::uint32_t* slots,
-                         bool in_place) {
+                         bool in_place, std::span<Word> scratch) {
   const std::size_t n = order.size();
   std::vector<std::uint32_t> found;
   if (!slots) {
@@ -166,18 +166,21 @@ void StateStore::reorder(StateId first, std::span<const StateId> order, const st
       slot = (slot & ~id_bits) | static_cast<std::uint32_t>(first + i + 1);
     }
   });
-  const std::size_t count = size() - first; // holes included
-  if (in_place)
+  const std::size_t count = size() - first;            // holes included
+  const bool spare = scratch.size() >= count * words_; // (then the copy costs nothing)
+  if (in_place && !spare)
     permute_in_place(level, count, order, first);
   else {
-    const std::unique_ptr<Word[]> before(new Word[count * words_]); // (not zeroed: copied over)
+    std::unique_ptr<Word[]> own; // (not zeroed: copied over)
+    if (!spare)
+      own.reset(new Word[count * words_]);
+    Word* before = spare ? scratch.data() : own.get();
     parallel_for(threads_, count * words_, [&](std::uint64_t begin, std::uint64_t end) {
-      std::copy(level + begin, level + end, before.get() + begin);
+      std::copy(level + begin, level + end, before + begin);
     });
     parallel_for(threads_, n, [&](std::uint64_t begin, std::uint64_t end) {
       for (std::uint64_t i = begin; i < end; ++i)
-        std::copy_n(before.get() + std::size_t{order[i] - first} * words_, words_,
-                    level + i * words_);
+        std::copy_n(before + std::size_t{order[i] - first} * words_, words_, level + i * words_);
     });
   }
   count_ = first + n;

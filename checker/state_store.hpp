@@ -161,8 +161,10 @@ public:
   // thread uses the store. `in_place`: the states move along the permutation's cycles,
   // one at a time, instead of through a copy of the level (reorder_copy_bytes()): slower,
   // for when that copy does not fit in the memory limit.
+  // `scratch`: where the copy of the level goes when it holds reorder_copy_bytes() (else
+  // a buffer of its own is allocated, or with `in_place` none); with it, never in place.
   void reorder(StateId first, std::span<const StateId> order, const std::uint32_t* slots,
-               bool in_place = false);
+               bool in_place = false, std::span<Word> scratch = {});
   // reorder() for an order that moves few states (Discovery::dense_order): only the states
   // that move are touched.
   void fill_holes(StateId first, std::span<const StateId> order, const std::uint32_t* slots);
