@@ -1,7 +1,5 @@
 #include "models/vn_emulation/vn_mc.hpp"
 
-#include <type_traits>
-
 #include "models/vlayer_mc/target_memo.hpp"
 #include "models/vn_layer/config.hpp"
 

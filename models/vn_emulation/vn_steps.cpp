@@ -13,8 +13,10 @@ std::pair<int, int> vn_head(const Slots& slots, const VnValue& v) {
 }
 
 bool vn_send_enabled(const Slots& slots, const VnValue& v, int count, int last) {
-  if (slots.mc)
-    return slots.mc->head(v.mc) >= 0 && slots.mc->head(v.mc) == count && last == 0;
+  if (slots.mc) {
+    const int head = slots.mc->head(v.mc);
+    return head >= 0 && head == count && last == 0;
+  }
   return v.send_enabled(count, last);
 }
 
