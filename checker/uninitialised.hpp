@@ -5,6 +5,7 @@
 // over fresh pages before the parallel one that writes them.
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace checker {
