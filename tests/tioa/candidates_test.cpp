@@ -225,6 +225,7 @@ TEST_CASE("a filter over an array of fields side by side reads them at once, adm
           const int width = static_cast<int>(level.items.front().slot.width);
           CHECK(b.run.has_value() == ((count == 1 || !apart) && count * width <= 63));
           std::vector<Word> state(a.words() + 1, 0);
+          const SuccessorGenerator generator(a);
           for (int round = 0; round < 50; ++round) {
             for (Word& w : state)
               w = next();
@@ -237,6 +238,47 @@ TEST_CASE("a filter over an array of fields side by side reads them at once, adm
             for (const Params& p : candidates(a, state))
               tried.push_back(p[0]);
             CHECK(tried == expected);
+            // The generator's own reading of the run (SuccessorGenerator::RunFilter).
+            std::vector<std::int32_t> generated;
+            std::vector<Word> scratch(a.words() + 1, 0);
+            generator.successors(state.data(), scratch.data(),
+                                 [&](const Word*, const StepLabel& label) {
+                                   if (!label.is_tick())
+                                     generated.push_back(label.params[0]);
+                                 });
+            CHECK(generated == expected);
           }
         }
+}
+
+TEST_CASE("the generator reads a filter in the owner's part of a composition, as the candidate "
+          "loop does",
+          "[candidates]") {
+  const Automaton filtered = compose("two", {starter("a", true), Fail(starter("b", true))});
+  const Automaton free = compose("two", {starter("a", false), Fail(starter("b", false))});
+  const SuccessorGenerator with(filtered), without(free);
+  std::vector<Word> state(filtered.words() + 1, 0);
+  filtered.start().enumerate(state.data(), 0, [] {});
+  State s(state.data(), 0);
+  const auto both = [&] {
+    std::vector<Word> scratch(filtered.words() + 1, 0);
+    std::vector<std::vector<Word>> a, b;
+    with.successors(state.data(), scratch.data(), [&](const Word* w, const StepLabel&) {
+      a.emplace_back(w, w + filtered.words());
+    });
+    without.successors(state.data(), scratch.data(), [&](const Word* w, const StepLabel&) {
+      b.emplace_back(w, w + filtered.words());
+    });
+    CHECK(a == b);
+    return a.size();
+  };
+  s.set(find_variable<bool>(filtered, "b.failed"), false);
+  const std::size_t inputs = both(); // Fail's inputs; every phase is BUSY at start
+  s.set(find_variable<Phase>(filtered, "b.phase[2]"), Phase::idle);
+  CHECK(both() == inputs + 1);
+  s.set(find_variable<Phase>(filtered, "a.phase[1]"), Phase::idle);
+  s.set(find_variable<Phase>(filtered, "a.phase[3]"), Phase::idle);
+  CHECK(both() == inputs + 3);
+  s.set(find_variable<bool>(filtered, "b.failed"), true); // Fail(b) freezes go_b
+  CHECK(both() == inputs + 2);
 }
