@@ -160,11 +160,7 @@ private:
     std::int32_t first;    // the id of the first field
     // One bit (the lowest of its field) per admitted id, in increasing order of ids.
     std::uint64_t admitted(const State& s) const {
-      const std::uint64_t x = s.code(bits) ^ pattern;
-      std::uint64_t nonzero = x; // a field of x is zero where the code is the admitted one
-      for (std::uint32_t k = 1; k < width; ++k)
-        nonzero |= x >> k;
-      return ~nonzero & low;
+      return admitted_fields(s.code(bits), pattern, low, width);
     }
   };
   static std::optional<RunFilter> run_filter(const ActionSignature& sig, const Transition& t) {
