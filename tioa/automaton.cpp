@@ -49,18 +49,9 @@ TransitionBuilder& TransitionBuilder::add_filter(const std::string& param, Bindi
       throw ModelError("action '" + sig.name + "': parameter '" + param +
                        "' is filtered by a value outside the domain of '" + slot.name + "'");
   binding.where_code = static_cast<std::uint64_t>(code);
-  const std::vector<Slot>& where = binding.where;
-  const std::uint32_t width = where.front().width;
-  bool one_run = where.size() * width <= 63;
-  for (std::size_t i = 1; i < where.size() && one_run; ++i)
-    one_run = where[i].width == width && where[i].offset == where.front().offset + i * width;
-  if (one_run) {
-    binding.run = Slot::bits(where.front().offset, static_cast<std::uint8_t>(where.size() * width));
-    for (std::size_t i = 0; i < where.size(); ++i) {
-      binding.run_pattern |= binding.where_code << (i * width);
-      binding.run_low |= std::uint64_t{1} << (i * width);
-    }
-  }
+  binding.run = field_run(binding.where);
+  if (binding.run)
+    binding.run_pattern = binding.run->pattern(binding.where_code);
   return add_binding(param, std::move(binding));
 }
 

@@ -9,20 +9,9 @@
 #include <optional>
 
 #include "tioa/automaton.hpp"
+#include "tioa/field_run.hpp"
 
 namespace tioa {
-
-// A filter read as one run of fields (Binding::run): `code` holds the fields side by side,
-// `width` bits each, `pattern` the admitted code in every field and `low` bit 0 of every
-// field. The result has the lowest bit of each field that holds the admitted code.
-inline std::uint64_t admitted_fields(std::uint64_t code, std::uint64_t pattern, std::uint64_t low,
-                                     std::uint32_t width) {
-  const std::uint64_t x = code ^ pattern;
-  std::uint64_t nonzero = x; // a field of x is zero where the code is the admitted one
-  for (std::uint32_t k = 1; k < width; ++k)
-    nonzero |= x >> k;
-  return ~nonzero & low;
-}
 
 namespace candidates_detail {
 
@@ -46,16 +35,17 @@ void from(std::size_t i, std::size_t binding, const ActionSignature& sig, const 
     if (b.run) { // the fields of the ids first..last at once (the same bits as one by one)
       if (first > last)
         return;
-      const std::uint32_t width = b.where.front().width;
+      const std::uint32_t width = b.run->width;
       const auto lo_bit = static_cast<std::uint32_t>((first - b.where_first) * width);
       const auto bits = static_cast<std::uint32_t>((last - first + 1) * width); // < 64
       std::uint64_t match = admitted_fields(
-          local.code(Slot::bits(b.run->offset + lo_bit, static_cast<std::uint8_t>(bits))),
-          b.run_pattern >> lo_bit, (b.run_low >> lo_bit) & ((std::uint64_t{1} << bits) - 1), width);
+          local.code(Slot::bits(b.run->bits.offset + lo_bit, static_cast<std::uint8_t>(bits))),
+          b.run_pattern >> lo_bit, (b.run->low >> lo_bit) & ((std::uint64_t{1} << bits) - 1),
+          width);
       while (match != 0) { // the admitted ids, in increasing order
         const auto bit = static_cast<std::uint32_t>(__builtin_ctzll(match));
         match &= match - 1;
-        p.values[i] = static_cast<std::int32_t>(first + bit / width);
+        p.values[i] = static_cast<std::int32_t>(first + b.run->field_of(bit));
         from(i + 1, binding + 1, sig, t, s, p, visit);
       }
       return;

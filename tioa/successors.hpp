@@ -32,15 +32,19 @@ struct StepLabel {
 class SuccessorGenerator {
 public:
   explicit SuccessorGenerator(const Automaton& automaton)
-      : automaton_(&automaton), words_(automaton.words()) {
+      : automaton_(&automaton), words_(automaton.words()), timed_(automaton.timed()) {
     for (const Transition& t : automaton.transitions()) {
       const TransitionPart& owner = t.parts.front();
       Entry e;
+      e.action = static_cast<std::uint32_t>(table_.size());
+      e.signature = &automaton.actions()[e.action];
+      e.transition = &t;
+      e.input = e.signature->kind == ActionKind::input;
       e.simple =
           t.parts.size() == 1 && owner.base == 0 && owner.frozen_by.empty() && !owner.choice_effect;
       e.guard = owner.guard ? &owner.guard : nullptr;
       e.effect = owner.effect ? &owner.effect : nullptr;
-      const ActionSignature& sig = automaton.actions()[table_.size()];
+      const ActionSignature& sig = *e.signature;
       e.run = run_filter(sig, t);
       if (sig.params.size() == 1 && !sig.accepts && t.bindings.size() == 1 &&
           t.bindings.front().param == 0 && !t.bindings.front().filter())
@@ -50,12 +54,12 @@ public:
   }
 
   std::uint32_t words() const { return words_; }
-  bool timed() const { return automaton_->timed(); }
+  bool timed() const { return timed_; }
   const Automaton& automaton() const { return *automaton_; }
 
   // Time a step takes: a tick in a timed automaton, any step in an untimed one.
   std::uint32_t duration(const StepLabel& label) const {
-    return timed() ? (label.is_tick() ? 1u : 0u) : 1u;
+    return timed_ ? (label.is_tick() ? 1u : 0u) : 1u;
   }
 
   // Calls emit(successor, label) for each successor; `scratch` holds words()+1 words.
@@ -64,17 +68,14 @@ public:
   std::size_t successors(const Word* state, Word* scratch, Emit&& emit) const {
     std::size_t count = 0;
     const State from(state, 0);
-    const auto& actions = automaton_->actions();
-    const auto& transitions = automaton_->transitions();
     StepLabel label;
-    for (std::uint32_t a = 0; a < actions.size(); ++a) {
-      const Transition& t = transitions[a];
-      const Entry& entry = table_[a];
-      label.action = a;
+    for (const Entry& entry : table_) {
+      const Transition& t = *entry.transition;
+      label.action = entry.action;
       auto step = [&](const Params& p) {
         if (entry.simple ? entry.guard && !(*entry.guard)(from, p) : !t.enabled(from, p)) {
-          if (actions[a].kind == ActionKind::input)
-            throw_input_not_enabled(actions[a], p);
+          if (entry.input)
+            throw_input_not_enabled(*entry.signature, p);
           return;
         }
         label.params = p;
@@ -106,20 +107,20 @@ public:
         p.size = 1;
         for (std::uint64_t match = run.admitted(from); match != 0; match &= match - 1) {
           const auto bit = static_cast<std::uint32_t>(__builtin_ctzll(match));
-          p.values[0] = run.first + static_cast<std::int32_t>(bit / run.width);
+          p.values[0] = run.first + static_cast<std::int32_t>(run.fields.field_of(bit));
           step(p);
         }
       } else if (entry.bound) {
         Params p;
         p.size = 1;
         const std::optional<std::int32_t> value = entry.bound->bind(from, p);
-        const ParamRange& range = actions[a].params.front();
+        const ParamRange& range = entry.signature->params.front();
         if (value && *value >= range.lo && *value <= range.hi) {
           p.values[0] = *value;
           step(p);
         }
       } else {
-        for_each_candidate(actions[a], t, from, step);
+        for_each_candidate(*entry.signature, t, from, step);
       }
     }
     const Trajectories& traj = automaton_->trajectory();
@@ -143,9 +144,11 @@ public:
   }
 
 private:
-  // States are a few words: a plain loop beats a call to memcpy.
+  // States are a few words (at least one): a plain loop beats a call to memcpy, and the
+  // first word apart spares a one-word state the loop's set-up.
   void copy_state(Word* to, const Word* from) const {
-    for (std::uint32_t i = 0; i < words_; ++i)
+    to[0] = from[0];
+    for (std::uint32_t i = 1; i < words_; ++i)
       to[i] = from[i];
   }
 
@@ -153,14 +156,12 @@ private:
   // of bits (candidates.hpp): its ids first.. with their fields at fixed places of the
   // state, so that the admitted ids are found without the candidate recursion.
   struct RunFilter {
-    Slot bits;             // the fields of the ids first..last, in the whole state
+    FieldRun fields;       // of the ids first..last, in the whole state
     std::uint64_t pattern; // the admitted code in every field
-    std::uint64_t low;     // bit 0 of every field
-    std::uint32_t width;   // of a field
     std::int32_t first;    // the id of the first field
     // One bit (the lowest of its field) per admitted id, in increasing order of ids.
     std::uint64_t admitted(const State& s) const {
-      return admitted_fields(s.code(bits), pattern, low, width);
+      return fields.holding(s.code(fields.bits), pattern);
     }
   };
   static std::optional<RunFilter> run_filter(const ActionSignature& sig, const Transition& t) {
@@ -176,13 +177,12 @@ private:
     if (first > last)
       return std::nullopt; // (no id: the recursion returns at once too)
     RunFilter r;
-    r.width = b.where.front().width;
+    const std::uint32_t width = b.run->width;
     r.first = static_cast<std::int32_t>(first);
-    const auto lo_bit = static_cast<std::uint32_t>((first - b.where_first) * r.width);
-    const auto bits = static_cast<std::uint32_t>((last - first + 1) * r.width); // < 64
-    r.bits = Slot::bits(b.base + b.run->offset + lo_bit, static_cast<std::uint8_t>(bits));
+    const auto lo_bit = static_cast<std::uint32_t>((first - b.where_first) * width);
+    r.fields = field_run_at(b.base + b.run->bits.offset + lo_bit, width,
+                            static_cast<std::uint32_t>(last - first + 1));
     r.pattern = b.run_pattern >> lo_bit;
-    r.low = (b.run_low >> lo_bit) & ((std::uint64_t{1} << bits) - 1);
     return r;
   }
 
@@ -190,6 +190,10 @@ private:
   // that no Fail freezes and that has no choice (most are), its guard and effect are
   // called directly.
   struct Entry {
+    std::uint32_t action = 0; // its index in the automaton
+    const ActionSignature* signature = nullptr;
+    const Transition* transition = nullptr;
+    bool input = false; // (a guard that refuses an input is a model error)
     bool simple = false;
     const Guard* guard = nullptr; // null: always enabled
     const Effect* effect = nullptr;
@@ -199,6 +203,7 @@ private:
 
   const Automaton* automaton_;
   std::uint32_t words_;
+  bool timed_;
   std::vector<Entry> table_;
 };
 

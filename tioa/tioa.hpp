@@ -5,6 +5,7 @@
 #include "tioa/compose.hpp"
 #include "tioa/errors.hpp"
 #include "tioa/fail.hpp"
+#include "tioa/ids_where.hpp"
 #include "tioa/operators.hpp"
 #include "tioa/start_set.hpp"
 #include "tioa/state.hpp"

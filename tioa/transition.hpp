@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "tioa/actions.hpp"
+#include "tioa/field_run.hpp"
 #include "tioa/footprint.hpp"
 #include "tioa/start_set.hpp"
 #include "tioa/state.hpp"
@@ -53,9 +54,8 @@ struct Binding {
   // (a filter whose variables lie one after the other, all as wide, in at most 63 bits, as
   // an array of small variables declared together does) The run of bits they fill, and
   // where_code in every field of it: the generator reads every id's field at once.
-  std::optional<Slot> run;
+  std::optional<FieldRun> run;
   std::uint64_t run_pattern = 0;
-  std::uint64_t run_low = 0; // bit 0 of every field
 
   bool filter() const { return !value; }
   // (a one-point binder) Its value in this state.

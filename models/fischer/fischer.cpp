@@ -1,6 +1,9 @@
 #include "models/fischer/fischer.hpp"
 
 #include <algorithm>
+#include <cstddef>
+
+#include "tioa/ids_where.hpp"
 
 namespace fischer {
 
@@ -70,22 +73,16 @@ Fischer build(int n, int a, int b) {
 
   // Time: a global tick, enabled iff no process is in REQ with c[p] >= A (urgency); it
   // advances the clocks of REQ and WAIT processes, saturating at CMAX.
-  f.trajectories(
-      [=](State& s) {
-        for (int p = 1; p <= n; ++p)
-          if (s[loc[p]] == Loc::req || s[loc[p]] == Loc::wait)
-            s.advance(c[p]);
-      },
-      [=](const State& s) {
-        for (int p = 1; p <= n; ++p)
-          if (s[loc[p]] == Loc::req && s[c[p]] >= a)
-            return true;
-        return false;
-      });
+  const tioa::IdsWhere<Loc> requesting(loc, {Loc::req});
+  const tioa::IdsWhere<Loc> clocked(loc, {Loc::req, Loc::wait});
+  f.trajectories([=](State& s) { clocked.for_each(s, [&](std::size_t p) { s.advance(c[p]); }); },
+                 [=](const State& s) {
+                   return requesting.any(s, [&](std::size_t p) { return s[c[p]] >= a; });
+                 });
 
+  const tioa::IdsWhere<Loc> in_cs(loc, {Loc::cs});
   const tioa::StatePredicate at_most_one_in_cs = [=](const State& s) {
-    return std::count_if(loc.begin(), loc.end(), [&](const auto& l) { return s[l] == Loc::cs; }) <=
-           1;
+    return in_cs.count(s) <= 1;
   };
   return {f, at_most_one_in_cs};
 }
