@@ -8,9 +8,10 @@
 //   ... [=](const State& s) { return in_cs.count(s) <= 1; }
 //
 // When the array's variables lie side by side (as an array of small variables declared
-// together does) and have no ⊥, one read of the state gives every id at once
-// (field_run.hpp); otherwise each variable is read in turn, exactly as s[a[p]] would be
-// (a read of ⊥ then throws as it does there). Either way the same ids, in increasing order.
+// together does), share their lowest value and have no ⊥, one read of the state gives
+// every id at once (field_run.hpp); otherwise each variable is read in turn, exactly as
+// s[a[p]] would be (a read of ⊥ then throws as it does there). Either way the same ids,
+// in increasing order.
 
 #include <bit>
 #include <cstdint>
@@ -32,10 +33,11 @@ public:
       : values_(values), first_(array.first) {
     if (values_.empty())
       throw ModelError("an id query needs at least one value");
-    bool has_bottom = false;
+    bool has_bottom = false, same_domain = true; // (one pattern per value for the run)
     for (const Variable<T>& v : array) {
       slots_.push_back(v.slot);
       has_bottom = has_bottom || v.slot.has_bottom;
+      same_domain = same_domain && v.slot.lo == slots_.front().lo;
       for (const T value : values_) {
         const std::int64_t code = static_cast<std::int64_t>(value) - v.slot.lo;
         if (code < 0 || static_cast<std::uint64_t>(code) >= v.slot.value_codes)
@@ -43,7 +45,7 @@ public:
                            v.slot.name + "'");
       }
     }
-    if (!has_bottom)
+    if (!has_bottom && same_domain)
       run_ = field_run(slots_);
     if (run_)
       for (const T value : values_)

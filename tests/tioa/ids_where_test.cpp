@@ -121,3 +121,20 @@ TEST_CASE("an id query for a value outside the array's domain is a model error")
   CHECK_THROWS_AS(IdsWhere<int>(level, {4}), ModelError);
   CHECK_THROWS_AS(IdsWhere<int>(level, {}), ModelError);
 }
+
+TEST_CASE("an id query over side-by-side variables of different lowest values reads them one by "
+          "one") {
+  Automaton a("shifted");
+  VariableArray<int> level;
+  level.items.push_back(a.integer("level[0]", 0, 3, 0));
+  level.items.push_back(a.integer("level[1]", 1, 4, 1)); // the same width, another code of 2
+  const IdsWhere<int> at_two(level, {2});
+  CHECK_FALSE(at_two.reads_at_once());
+  std::vector<Word> words(a.words() + 1, 0);
+  State s(words.data(), 0);
+  s[level[0]] = 2;
+  s[level[1]] = 2;
+  CHECK(at_two.count(s) == 2);
+  s[level[1]] = 3;
+  CHECK(at_two.count(s) == 1);
+}
