@@ -39,19 +39,28 @@ TransitionBuilder& TransitionBuilder::bind(const std::string& param, Binder valu
 }
 
 TransitionBuilder& TransitionBuilder::add_filter(const std::string& param, Binding binding,
-                                                 std::int64_t code) {
+                                                 const std::vector<std::int64_t>& codes) {
   const ActionSignature& sig = automaton_->signature(action_);
   if (binding.where.empty())
     throw ModelError("action '" + sig.name + "': parameter '" + param +
                      "' is filtered by an empty array");
-  for (const Slot& slot : binding.where)
-    if (code < 0 || static_cast<std::uint64_t>(code) >= slot.value_codes)
-      throw ModelError("action '" + sig.name + "': parameter '" + param +
-                       "' is filtered by a value outside the domain of '" + slot.name + "'");
-  binding.where_code = static_cast<std::uint64_t>(code);
+  if (codes.empty())
+    throw ModelError("action '" + sig.name + "': parameter '" + param +
+                     "' is filtered by an empty set of values");
+  for (const std::int64_t code : codes) {
+    for (const Slot& slot : binding.where)
+      if (code < 0 || static_cast<std::uint64_t>(code) >= slot.value_codes)
+        throw ModelError("action '" + sig.name + "': parameter '" + param +
+                         "' is filtered by a value outside the domain of '" + slot.name + "'");
+    const auto admitted = static_cast<std::uint64_t>(code);
+    if (std::find(binding.where_codes.begin(), binding.where_codes.end(), admitted) ==
+        binding.where_codes.end())
+      binding.where_codes.push_back(admitted);
+  }
   binding.run = field_run(binding.where);
   if (binding.run)
-    binding.run_pattern = binding.run->pattern(binding.where_code);
+    for (const std::uint64_t code : binding.where_codes)
+      binding.run_patterns.push_back(binding.run->pattern(code));
   return add_binding(param, std::move(binding));
 }
 
@@ -65,13 +74,15 @@ TransitionBuilder& TransitionBuilder::add_binding(const std::string& param, Bind
   if (index == sig.params.size())
     throw ModelError("action '" + sig.name + "' has no parameter '" + param + "' to bind");
   Transition& t = automaton_->transition(action_);
+  // Filters add up (the ids all of them admit); a binder gives the one value, alone.
   for (const Binding& b : t.bindings)
-    if (b.param == index)
+    if (b.param == index && !(b.filter() && binding.filter()))
       throw ModelError("parameter '" + param + "' of '" + sig.name + "' is bound twice");
   binding.param = static_cast<std::uint8_t>(index);
   t.bindings.push_back(std::move(binding));
-  std::sort(t.bindings.begin(), t.bindings.end(),
-            [](const Binding& a, const Binding& b) { return a.param < b.param; });
+  // By parameter; a parameter's filters in the order they were given.
+  std::stable_sort(t.bindings.begin(), t.bindings.end(),
+                   [](const Binding& a, const Binding& b) { return a.param < b.param; });
   return *this;
 }
 

@@ -46,27 +46,37 @@ public:
   TransitionBuilder& bind(const std::string& param, Binder value);
   // The parameter equals the variable (no value while it is ⊥).
   TransitionBuilder& bind(const std::string& param, const Variable<int>& variable);
-  // The parameter takes only the ids whose variable in `array` holds `value`: for a
-  // guard that says so (Fischer's "loc[p] == REQ"), which keeps its own test. The
-  // generator reads one field per id instead of calling the guard for every id.
+  // The parameter takes only the ids whose variable in `array` holds `value` (or one of
+  // `values`): for a guard that says so (Fischer's "loc[p] == REQ", "c[p] >= B"), which
+  // keeps its own test. The generator reads one field per id instead of calling the
+  // guard for every id. Several filters on one parameter admit the ids all of them admit.
   template <class T>
   TransitionBuilder& where(const std::string& param, const VariableArray<T>& array, T value) {
+    return where(param, array, std::vector<T>{value});
+  }
+  template <class T>
+  TransitionBuilder& where(const std::string& param, const VariableArray<T>& array,
+                           const std::vector<T>& values) {
     Binding b;
     b.where.reserve(array.size());
     for (const Variable<T>& v : array)
       b.where.push_back(v.slot);
     b.where_first = static_cast<std::int32_t>(array.first);
-    std::int64_t code = 0;
-    if constexpr (std::is_same_v<T, bool>)
-      code = value ? 1 : 0;
-    else
-      code = static_cast<std::int64_t>(value) - (array.size() ? array.items[0].slot.lo : 0);
-    return add_filter(param, std::move(b), code);
+    std::vector<std::int64_t> codes;
+    for (const T& value : values) {
+      if constexpr (std::is_same_v<T, bool>)
+        codes.push_back(value ? 1 : 0);
+      else
+        codes.push_back(static_cast<std::int64_t>(value) -
+                        (array.size() ? array.items[0].slot.lo : 0));
+    }
+    return add_filter(param, std::move(b), codes);
   }
 
 private:
   TransitionBuilder& add_binding(const std::string& param, Binding binding);
-  TransitionBuilder& add_filter(const std::string& param, Binding binding, std::int64_t code);
+  TransitionBuilder& add_filter(const std::string& param, Binding binding,
+                                const std::vector<std::int64_t>& codes);
   Automaton* automaton_;
   std::size_t action_;
 };

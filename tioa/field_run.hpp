@@ -5,6 +5,7 @@
 // of a transition (transition.hpp, Binding) and the array queries (ids_where.hpp) read an
 // array this way instead of one variable at a time.
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -13,23 +14,22 @@
 
 namespace tioa {
 
-// `code` holds the fields side by side, `width` bits each, `pattern` the admitted code in
-// every field and `low` bit 0 of every field. The result has the lowest bit of each field
-// that holds the admitted code.
-inline std::uint64_t admitted_fields(std::uint64_t code, std::uint64_t pattern, std::uint64_t low,
-                                     std::uint32_t width) {
-  const std::uint64_t x = code ^ pattern;
-  std::uint64_t nonzero = x; // a field of x is zero where the code is the admitted one
-  for (std::uint32_t k = 1; k < width; ++k)
-    nonzero |= x >> k;
-  return ~nonzero & low;
-}
-
 struct FieldRun {
   Slot bits;                    // the whole run
   std::uint32_t width = 0;      // of one field
   std::uint64_t low = 0;        // bit 0 of every field
   std::uint32_t reciprocal = 0; // ⌈2^16 / width⌉, for field_of
+  // differing()'s shifts: each ORs bits [k, k + covered) of a field into bit k, until
+  // `covered` reaches the width (at most 6 shifts for 63 bits).
+  std::uint8_t fold_shifts[6] = {};
+  std::uint32_t folds = 0;
+
+  // Bit 0 of each field of `x` is set when the field is not zero (the other bits: noise).
+  std::uint64_t differing(std::uint64_t x) const {
+    for (std::uint32_t k = 0; k < folds; ++k)
+      x |= x >> fold_shifts[k];
+    return x;
+  }
 
   // `code` in every field.
   std::uint64_t pattern(std::uint64_t code) const { return code * low; }
@@ -39,7 +39,7 @@ struct FieldRun {
   std::uint32_t field_of(std::uint32_t bit) const { return (bit * reciprocal) >> 16; }
   // One bit (the lowest of its field) per field holding `pattern`'s code.
   std::uint64_t holding(std::uint64_t run_code, std::uint64_t pattern) const {
-    return admitted_fields(run_code, pattern, low, width);
+    return ~differing(run_code ^ pattern) & low;
   }
 };
 
@@ -51,6 +51,11 @@ inline FieldRun field_run_at(std::uint32_t offset, std::uint32_t width, std::uin
   for (std::uint32_t i = 0; i < count; ++i)
     run.low |= std::uint64_t{1} << (i * width);
   run.reciprocal = ((std::uint32_t{1} << 16) + width - 1) / width;
+  for (std::uint32_t covered = 1; covered < width;) {
+    const std::uint32_t shift = std::min(covered, width - covered);
+    run.fold_shifts[run.folds++] = static_cast<std::uint8_t>(shift);
+    covered += shift;
+  }
   return run;
 }
 

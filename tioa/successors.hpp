@@ -105,7 +105,7 @@ public:
         const RunFilter& run = *entry.run;
         Params p;
         p.size = 1;
-        for (std::uint64_t match = run.admitted(from); match != 0; match &= match - 1) {
+        for (std::uint64_t match = run.admitted(state); match != 0; match &= match - 1) {
           const auto bit = static_cast<std::uint32_t>(__builtin_ctzll(match));
           p.values[0] = run.first + static_cast<std::int32_t>(run.fields.field_of(bit));
           step(p);
@@ -152,37 +152,78 @@ private:
       to[i] = from[i];
   }
 
-  // An action whose one parameter is an id that a `.where` filter admits, read as one run
-  // of bits (candidates.hpp): its ids first.. with their fields at fixed places of the
-  // state, so that the admitted ids are found without the candidate recursion.
+  // An action whose one parameter is an id that `.where` filters admit, each read as one
+  // run of bits of one width (candidates.hpp): its ids first.. with their fields at fixed
+  // places of the state, so that the admitted ids are found without the candidate
+  // recursion.
   struct RunFilter {
-    FieldRun fields;       // of the ids first..last, in the whole state
-    std::uint64_t pattern; // the admitted code in every field
-    std::int32_t first;    // the id of the first field
-    // One bit (the lowest of its field) per admitted id, in increasing order of ids.
-    std::uint64_t admitted(const State& s) const {
-      return fields.holding(s.code(fields.bits), pattern);
+    static constexpr std::uint32_t max_filters = 4, max_codes = 4;
+    struct Filter {
+      // The fields of the ids first..last: `mask` bits from bit `shift` of word `word`,
+      // spilling into the next word when `spans`.
+      std::uint32_t word = 0, shift = 0;
+      bool spans = false;
+      std::uint64_t mask = 0;
+      std::uint32_t codes = 0;
+      std::uint64_t patterns[max_codes] = {}; // each admitted code in every field
+      std::uint64_t read(const Word* state) const {
+        std::uint64_t value = state[word] >> shift;
+        if (spans)
+          value |= state[word + 1] << (64 - shift);
+        return value & mask;
+      }
+    };
+    FieldRun fields;    // the shape of every filter's fields: width, low bits, field_of
+    std::int32_t first; // the id of the first field
+    std::uint32_t count = 0;
+    Filter filters[max_filters];
+    // One bit (the lowest of its field) per id every filter admits, in increasing order.
+    std::uint64_t admitted(const Word* state) const {
+      if (count == 1 && filters[0].codes == 1) // one filter of one code, as most are
+        return fields.holding(filters[0].read(state), filters[0].patterns[0]);
+      std::uint64_t match = ~std::uint64_t{0};
+      for (std::uint32_t f = 0; f < count; ++f) {
+        const Filter& filter = filters[f];
+        const std::uint64_t code = filter.read(state);
+        std::uint64_t admitted_here = 0;
+        for (std::uint32_t c = 0; c < filter.codes; ++c)
+          admitted_here |= ~fields.differing(code ^ filter.patterns[c]);
+        match &= admitted_here;
+      }
+      return match & fields.low;
     }
   };
   static std::optional<RunFilter> run_filter(const ActionSignature& sig, const Transition& t) {
-    if (sig.params.size() != 1 || sig.accepts || t.bindings.size() != 1)
-      return std::nullopt;
-    const Binding& b = t.bindings.front();
-    if (b.param != 0 || !b.filter() || !b.run)
+    if (sig.params.size() != 1 || sig.accepts || t.bindings.empty() ||
+        t.bindings.size() > RunFilter::max_filters)
       return std::nullopt;
     const ParamRange& range = sig.params.front();
-    const std::int64_t first = std::max<std::int64_t>(range.lo, b.where_first);
-    const std::int64_t last =
-        std::min<std::int64_t>(range.hi, b.where_first + std::int64_t(b.where.size()) - 1);
+    std::int64_t first = range.lo, last = range.hi;
+    for (const Binding& b : t.bindings) {
+      if (b.param != 0 || !b.filter() || !b.run || b.run->width != t.bindings.front().run->width ||
+          b.run_patterns.size() > RunFilter::max_codes)
+        return std::nullopt;
+      first = std::max<std::int64_t>(first, b.where_first);
+      last = std::min<std::int64_t>(last, b.where_first + std::int64_t(b.where.size()) - 1);
+    }
     if (first > last)
       return std::nullopt; // (no id: the recursion returns at once too)
     RunFilter r;
-    const std::uint32_t width = b.run->width;
+    const std::uint32_t width = t.bindings.front().run->width;
+    const auto count = static_cast<std::uint32_t>(last - first + 1);
     r.first = static_cast<std::int32_t>(first);
-    const auto lo_bit = static_cast<std::uint32_t>((first - b.where_first) * width);
-    r.fields = field_run_at(b.base + b.run->bits.offset + lo_bit, width,
-                            static_cast<std::uint32_t>(last - first + 1));
-    r.pattern = b.run_pattern >> lo_bit;
+    for (const Binding& b : t.bindings) {
+      const auto lo_bit = static_cast<std::uint32_t>((first - b.where_first) * width);
+      RunFilter::Filter& f = r.filters[r.count++];
+      const std::uint32_t bit = b.base + b.run->bits.offset + lo_bit;
+      f.word = bit / 64;
+      f.shift = bit % 64;
+      f.spans = f.shift + count * width > 64;
+      f.mask = (std::uint64_t{1} << (count * width)) - 1; // (count * width < 64)
+      for (const std::uint64_t pattern : b.run_patterns)
+        f.patterns[f.codes++] = pattern >> lo_bit;
+    }
+    r.fields = field_run_at(0, width, count);
     return r;
   }
 

@@ -41,21 +41,23 @@ using StateMeasure = std::function<std::uint64_t(const State&)>;
 using Binder = std::function<std::optional<std::int32_t>(const State&, const Params&)>;
 
 // A parameter bound to the state: one value (`value`, a Binder), or, when `value` is
-// empty, a filter: the ids whose variable in an array holds one value (the guard's
-// "loc[p] == REQ", TransitionBuilder::where), tested by reading one field per id inline
-// instead of calling the guard through a std::function.
+// empty, a filter: the ids whose variable in an array holds one of a few values (the
+// guard's "loc[p] == REQ" or "c[p] >= B", TransitionBuilder::where), tested by reading one
+// field per id inline instead of calling the guard through a std::function. A parameter
+// may have several filters (the ids every one admits), or one binder.
 struct Binding {
   std::uint8_t param = 0;
   Binder value;
   std::vector<Slot> where;      // (a filter) the array's variables, by id from where_first
   std::int32_t where_first = 0; // the id of where[0]
-  std::uint64_t where_code = 0; // the code the variable of an admitted id holds
-  std::uint32_t base = 0;       // where the state of the automaton that wrote it begins
+  // The codes the variable of an admitted id may hold (a filter has at least one).
+  std::vector<std::uint64_t> where_codes;
+  std::uint32_t base = 0; // where the state of the automaton that wrote it begins
   // (a filter whose variables lie one after the other, all as wide, in at most 63 bits, as
   // an array of small variables declared together does) The run of bits they fill, and
-  // where_code in every field of it: the generator reads every id's field at once.
+  // each admitted code in every field of it: the generator reads every id's field at once.
   std::optional<FieldRun> run;
-  std::uint64_t run_pattern = 0;
+  std::vector<std::uint64_t> run_patterns;
 
   bool filter() const { return !value; }
   // (a one-point binder) Its value in this state.
@@ -66,8 +68,22 @@ struct Binding {
   // it (an id outside the array never is: the guard could not read its variable).
   bool admits(const State& local, std::int32_t id) const {
     const std::int64_t i = std::int64_t{id} - where_first;
-    return i >= 0 && i < static_cast<std::int64_t>(where.size()) &&
-           local.code(where[static_cast<std::size_t>(i)]) == where_code;
+    if (i < 0 || i >= static_cast<std::int64_t>(where.size()))
+      return false;
+    const std::uint64_t code = local.code(where[static_cast<std::size_t>(i)]);
+    for (const std::uint64_t admitted : where_codes)
+      if (code == admitted)
+        return true;
+    return false;
+  }
+  // (a filter with a run) One bit, the lowest of its field, per field of `run_code` (the
+  // fields of `run`, or a part of them from field 0, shifted down by `lo_bit` bits) that
+  // holds an admitted code.
+  std::uint64_t admitted_in(std::uint64_t run_code, std::uint64_t low, std::uint32_t lo_bit) const {
+    std::uint64_t match = 0;
+    for (const std::uint64_t pattern : run_patterns)
+      match |= ~run->differing(run_code ^ (pattern >> lo_bit));
+    return match & low;
   }
   // Whether the value `p` gives the parameter is one the binding allows in `s`.
   bool allows(const State& s, const Params& p) const {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <vector>
 
 #include "tioa/ids_where.hpp"
 
@@ -53,11 +54,15 @@ Fischer build(int n, int a, int b) {
         s[c[x[0]]] = 0;
       });
   // | fail  | loc[p] == WAIT && c[p] >= B && id != p | loc[p] := IDLE; c[p] := 0          |
+  std::vector<int> clock_at_least_b; // the values B..CMAX a clock may hold with c[p] >= B
+  for (int v = b; v <= cmax; ++v)
+    clock_at_least_b.push_back(v);
   f.internal("fail", {process})
       .pre([=](const State& s, const Params& x) {
         return s[loc[x[0]]] == Loc::wait && s[c[x[0]]] >= b && s[id] != x[0];
       })
       .where(process.name, loc, Loc::wait)
+      .where(process.name, c, clock_at_least_b)
       .eff([=](State& s, const Params& x) {
         s[loc[x[0]]] = Loc::idle;
         s[c[x[0]]] = 0;

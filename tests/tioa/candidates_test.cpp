@@ -180,7 +180,16 @@ TEST_CASE("a filter is refused for inputs, a twice-bound parameter and a value o
   CHECK_THROWS_WITH(out.where("p", level, 6), Catch::Contains("outside the domain"));
   CHECK_THROWS_WITH(out.where("p", level, 1), Catch::Contains("outside the domain"));
   out.where("p", level, 5);
-  CHECK_THROWS_WITH(out.where("p", level, 4), Catch::Contains("bound twice"));
+  out.where("p", level, std::vector<int>{4, 5}); // filters add up
+  CHECK_THROWS_WITH(out.bind("p", [](const State&, const Params&) { return std::optional{1}; }),
+                    Catch::Contains("bound twice"));
+  CHECK_THROWS_WITH(a.output("out2", {{"p", 1, 2}}).where("p", level, std::vector<int>{}),
+                    Catch::Contains("empty set of values"));
+  CHECK_THROWS_WITH(a.output("out3", {{"p", 1, 2}}).where("p", level, std::vector<int>{4, 9}),
+                    Catch::Contains("outside the domain"));
+  auto bound = a.output("bound", {{"p", 1, 2}});
+  bound.bind("p", [](const State&, const Params&) { return std::optional{1}; });
+  CHECK_THROWS_WITH(bound.where("p", level, 3), Catch::Contains("bound twice"));
   CHECK_THROWS_WITH(a.internal("none", {{"p", 1, 2}}).where("p", VariableArray<int>{}, 0),
                     Catch::Contains("empty array"));
 }
@@ -281,4 +290,87 @@ TEST_CASE("the generator reads a filter in the owner's part of a composition, as
   CHECK(both() == inputs + 3);
   s.set(find_variable<bool>(filtered, "b.failed"), true); // Fail(b) freezes go_b
   CHECK(both() == inputs + 2);
+}
+
+TEST_CASE("several filters on one parameter, each of several values, admit the ids every one "
+          "admits, read at once or one by one",
+          "[candidates]") {
+  std::uint64_t seed = 4242;
+  const auto next = [&] { // a small xorshift: the same states on every run
+    seed ^= seed << 13;
+    seed ^= seed >> 7;
+    seed ^= seed << 17;
+    return seed;
+  };
+  // level: 4 values (2 bits); clock: 4 values (2 bits, a run read with level's) or 8 (3
+  // bits, read one by one); a third filter over `flag` (1 bit) read one by one; arrays
+  // side by side or apart (no run: every filter one by one).
+  for (const int clock_values : {4, 8})
+    for (const bool apart : {false, true})
+      for (const bool with_flag : {false, true}) {
+        INFO(clock_values << " clock values, " << (apart ? "apart" : "side by side")
+                          << (with_flag ? ", with a flag filter" : ""));
+        Automaton a("filtered");
+        VariableArray<int> level, clock;
+        VariableArray<bool> flag;
+        level.first = clock.first = flag.first = 1;
+        if (apart) {
+          for (int i = 1; i <= 9; ++i) {
+            level.items.push_back(a.integer("level[" + std::to_string(i) + "]", 0, 3, 0));
+            clock.items.push_back(
+                a.integer("clock[" + std::to_string(i) + "]", 0, clock_values - 1, 0));
+            flag.items.push_back(a.boolean("flag[" + std::to_string(i) + "]", false));
+          }
+        } else {
+          level = a.integers("level", ids(1, 9), 0, 3, 0);
+          clock = a.integers("clock", ids(1, 9), 0, clock_values - 1, 0);
+          flag = a.booleans("flag", ids(1, 9), false);
+        }
+        const std::vector<int> levels{1, 3}, clocks{2, 3};
+        const auto admitted = [&](const State& s, std::int32_t p) {
+          const bool in_level =
+              std::find(levels.begin(), levels.end(), s[level[p]]) != levels.end();
+          const bool in_clock =
+              std::find(clocks.begin(), clocks.end(), s[clock[p]]) != clocks.end();
+          return in_level && in_clock && (!with_flag || s[flag[p]]);
+        };
+        auto go = a.internal("go", {{"p", 0, 8}}); // wider below, narrower above
+        go.pre([=](const State& s, const Params& x) { return x[0] >= 1 && admitted(s, x[0]); })
+            .where("p", level, levels)
+            .where("p", clock, clocks);
+        if (with_flag)
+          go.where("p", flag, true);
+        const auto& bindings = a.transitions()[0].bindings;
+        REQUIRE(bindings.size() == (with_flag ? 3u : 2u));
+        CHECK(bindings[0].run.has_value() == !apart);
+        const SuccessorGenerator generator(a);
+        std::vector<Word> state(a.words() + 1, 0);
+        for (int round = 0; round < 300; ++round) {
+          for (Word& w : state)
+            w = next();
+          const State s(state.data(), 0);
+          std::vector<std::int32_t> expected, tried, generated;
+          for (std::int32_t p = 1; p <= 8; ++p)
+            if (admitted(s, p))
+              expected.push_back(p);
+          for (const Params& p : candidates(a, state))
+            tried.push_back(p[0]);
+          CHECK(tried == expected);
+          std::vector<Word> scratch(a.words() + 1, 0);
+          generator.successors(state.data(), scratch.data(),
+                               [&](const Word*, const StepLabel& label) {
+                                 if (!label.is_tick())
+                                   generated.push_back(label.params[0]);
+                               });
+          CHECK(generated == expected);
+          Params p;
+          p.size = 1;
+          for (std::int32_t id = 0; id <= 9; ++id) { // what the reduction asks of one step
+            p.values[0] = id;
+            const bool all = std::all_of(bindings.begin(), bindings.end(),
+                                         [&](const Binding& b) { return b.allows(s, p); });
+            CHECK(all == (id >= 1 && admitted(s, id)));
+          }
+        }
+      }
 }
