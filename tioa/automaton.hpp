@@ -47,9 +47,10 @@ public:
   // The parameter equals the variable (no value while it is ⊥).
   TransitionBuilder& bind(const std::string& param, const Variable<int>& variable);
   // The parameter takes only the ids whose variable in `array` holds `value` (or one of
-  // `values`): for a guard that says so (Fischer's "loc[p] == REQ", "c[p] >= B"), which
-  // keeps its own test. The generator reads one field per id instead of calling the
-  // guard for every id. Several filters on one parameter admit the ids all of them admit.
+  // `values`): a conjunct of the guard (Fischer's "loc[p] == REQ", "c[p] >= B"), which
+  // .pre may test again or leave out (see Binder). The generator reads one field per id
+  // instead of calling the guard for every id. Several filters on one parameter admit
+  // the ids all of them admit.
   template <class T>
   TransitionBuilder& where(const std::string& param, const VariableArray<T>& array, T value) {
     return where(param, array, std::vector<T>{value});

@@ -37,7 +37,10 @@ using StateMeasure = std::function<std::uint64_t(const State&)>;
 // state (nullopt: none, e.g. the variable is ⊥): the one-point rule of a guard that says
 // "this parameter equals that state value" (e.g. GPSupdate(l, t)_p with l = loc(p)). The
 // successor generator then tries that value instead of every value of the box. A binder
-// reads the state and the parameters before its own; the guard keeps its own test.
+// reads the state and the parameters before its own. A step is enabled when each bound
+// parameter has its binder's value or is admitted by its filters, and the guard holds:
+// the guard may test the same again (most do, as the paper's line reads) or leave it out
+// (Fischer's set(p): its filter `loc[p] == REQ` is the whole guard).
 using Binder = std::function<std::optional<std::int32_t>(const State&, const Params&)>;
 
 // A parameter bound to the state: one value (`value`, a Binder), or, when `value` is

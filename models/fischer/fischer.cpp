@@ -28,16 +28,15 @@ Fischer build(int n, int a, int b) {
 
   // | try   | loc[p] == IDLE && id == 0              | loc[p] := REQ;  c[p] := 0          |
   f.internal("try", {process})
-      .pre([=](const State& s, const Params& x) { return s[loc[x[0]]] == Loc::idle && s[id] == 0; })
-      .where(process.name, loc, Loc::idle)
+      .where(process.name, loc, Loc::idle) // loc[p] == IDLE
+      .pre([=](const State& s, const Params&) { return s[id] == 0; })
       .eff([=](State& s, const Params& x) {
         s[loc[x[0]]] = Loc::req;
         s[c[x[0]]] = 0;
       });
   // | set   | loc[p] == REQ                          | loc[p] := WAIT; id := p; c[p] := 0 |
   f.internal("set", {process})
-      .pre([=](const State& s, const Params& x) { return s[loc[x[0]]] == Loc::req; })
-      .where(process.name, loc, Loc::req)
+      .where(process.name, loc, Loc::req) // loc[p] == REQ: the whole guard
       .eff([=](State& s, const Params& x) {
         s[loc[x[0]]] = Loc::wait;
         s[id] = x[0];
@@ -58,19 +57,16 @@ Fischer build(int n, int a, int b) {
   for (int v = b; v <= cmax; ++v)
     clock_at_least_b.push_back(v);
   f.internal("fail", {process})
-      .pre([=](const State& s, const Params& x) {
-        return s[loc[x[0]]] == Loc::wait && s[c[x[0]]] >= b && s[id] != x[0];
-      })
-      .where(process.name, loc, Loc::wait)
-      .where(process.name, c, clock_at_least_b)
+      .where(process.name, loc, Loc::wait)      // loc[p] == WAIT
+      .where(process.name, c, clock_at_least_b) // c[p] >= B
+      .pre([=](const State& s, const Params& x) { return s[id] != x[0]; })
       .eff([=](State& s, const Params& x) {
         s[loc[x[0]]] = Loc::idle;
         s[c[x[0]]] = 0;
       });
   // | exit  | loc[p] == CS                           | loc[p] := IDLE; id := 0            |
   f.internal("exit", {process})
-      .pre([=](const State& s, const Params& x) { return s[loc[x[0]]] == Loc::cs; })
-      .where(process.name, loc, Loc::cs)
+      .where(process.name, loc, Loc::cs) // loc[p] == CS: the whole guard
       .eff([=](State& s, const Params& x) {
         s[loc[x[0]]] = Loc::idle;
         s[id] = 0;
