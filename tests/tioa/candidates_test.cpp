@@ -32,6 +32,29 @@ Automaton picker(const std::string& name, bool bound) {
   return a;
 }
 
+// A small xorshift: the same random states on every run.
+struct Xorshift {
+  std::uint64_t seed;
+  std::uint64_t operator()() {
+    seed ^= seed << 13;
+    seed ^= seed >> 7;
+    seed ^= seed << 17;
+    return seed;
+  }
+};
+
+// The first parameter of every step the generator takes from `state` (ticks left out).
+std::vector<std::int32_t> generated_ids(const SuccessorGenerator& generator,
+                                        const std::vector<Word>& state) {
+  std::vector<std::int32_t> ids;
+  std::vector<Word> scratch(generator.words() + 1, 0);
+  generator.successors(state.data(), scratch.data(), [&](const Word*, const StepLabel& label) {
+    if (!label.is_tick())
+      ids.push_back(label.params[0]);
+  });
+  return ids;
+}
+
 std::vector<Params> candidates(const Automaton& a, const std::vector<Word>& state) {
   std::vector<Params> out;
   const State s(state.data(), 0);
@@ -197,13 +220,7 @@ TEST_CASE("a filter is refused for inputs, a twice-bound parameter and a value o
 TEST_CASE("a filter over an array of fields side by side reads them at once, admitting the "
           "ids one by one would",
           "[candidates]") {
-  std::uint64_t seed = 12345;
-  const auto next = [&] { // a small xorshift: the same states on every run
-    seed ^= seed << 13;
-    seed ^= seed >> 7;
-    seed ^= seed << 17;
-    return seed;
-  };
+  Xorshift next{12345};
   for (const int values : {2, 3, 4, 5, 16}) // fields of 1, 2, 2, 3 and 4 bits
     for (const int count : {1, 5, 12, 21})
       for (const int pad : {0, 7, 50})           // bits before the array: a run across two words
@@ -248,14 +265,7 @@ TEST_CASE("a filter over an array of fields side by side reads them at once, adm
               tried.push_back(p[0]);
             CHECK(tried == expected);
             // The generator's own reading of the run (SuccessorGenerator::RunFilter).
-            std::vector<std::int32_t> generated;
-            std::vector<Word> scratch(a.words() + 1, 0);
-            generator.successors(state.data(), scratch.data(),
-                                 [&](const Word*, const StepLabel& label) {
-                                   if (!label.is_tick())
-                                     generated.push_back(label.params[0]);
-                                 });
-            CHECK(generated == expected);
+            CHECK(generated_ids(generator, state) == expected);
           }
         }
 }
@@ -295,13 +305,7 @@ TEST_CASE("the generator reads a filter in the owner's part of a composition, as
 TEST_CASE("several filters on one parameter, each of several values, admit the ids every one "
           "admits, read at once or one by one",
           "[candidates]") {
-  std::uint64_t seed = 4242;
-  const auto next = [&] { // a small xorshift: the same states on every run
-    seed ^= seed << 13;
-    seed ^= seed >> 7;
-    seed ^= seed << 17;
-    return seed;
-  };
+  Xorshift next{4242};
   // level: 4 values (2 bits); clock: 4 values (2 bits, a run read with level's) or 8 (3
   // bits, read one by one); a third filter over `flag` (1 bit) read one by one; arrays
   // side by side or apart (no run: every filter one by one).
@@ -349,20 +353,14 @@ TEST_CASE("several filters on one parameter, each of several values, admit the i
           for (Word& w : state)
             w = next();
           const State s(state.data(), 0);
-          std::vector<std::int32_t> expected, tried, generated;
+          std::vector<std::int32_t> expected, tried;
           for (std::int32_t p = 1; p <= 8; ++p)
             if (admitted(s, p))
               expected.push_back(p);
           for (const Params& p : candidates(a, state))
             tried.push_back(p[0]);
           CHECK(tried == expected);
-          std::vector<Word> scratch(a.words() + 1, 0);
-          generator.successors(state.data(), scratch.data(),
-                               [&](const Word*, const StepLabel& label) {
-                                 if (!label.is_tick())
-                                   generated.push_back(label.params[0]);
-                               });
-          CHECK(generated == expected);
+          CHECK(generated_ids(generator, state) == expected);
           Params p;
           p.size = 1;
           for (std::int32_t id = 0; id <= 9; ++id) { // what the reduction asks of one step
