@@ -17,7 +17,6 @@
 
 #include "checker/mapped_memory.hpp"
 #include "checker/state_store.hpp"
-#include "checker/uninitialised.hpp"
 
 namespace checker {
 
@@ -44,8 +43,9 @@ public:
   }
   // What the keys of the states up to `size` (the store's) take: this much per state.
   static constexpr std::size_t bytes_per_state = sizeof(std::uint64_t) + sizeof(std::uint32_t);
+  // The buffers of the level's end come on top (order_bytes()).
   std::size_t bytes(std::uint64_t size) const {
-    return size > first_ ? (size - first_) * bytes_per_state : 0;
+    return (size > first_ ? (size - first_) * bytes_per_state : 0) + order_bytes();
   }
 
   // A new state, found first by the step `key`.
@@ -85,16 +85,28 @@ public:
   static constexpr std::uint64_t hole = ~std::uint64_t{0};
 
   // The states among ids first.. first + count - 1 (holes left out) in key order, given
-  // that their parents are in [parents_begin, parents_end). A counting sort by parent,
-  // then by step, shared by `threads` threads (the same order for any number).
-  UninitialisedVector<StateId> order(std::uint64_t count, StateId parents_begin,
-                                     StateId parents_end, std::uint32_t threads = 1) const;
+  // that their parents are in [parents_begin, parents_end), shared by `threads` threads
+  // (the same order for any number: the keys are distinct). In the discovery's own
+  // buffer, valid until the next order(), dense_order() or new_ids(). `parents`, when
+  // given, gets the parent of each state of the order, at its place.
+  std::span<const StateId> order(std::uint64_t count, StateId parents_begin, StateId parents_end,
+                                 std::uint32_t threads = 1, StateId* parents = nullptr);
   // The states among ids first.. first + count - 1 with the holes filled by the last
   // states, the others where they are: an order that moves few states, in no key order.
-  UninitialisedVector<StateId> dense_order(std::uint64_t count) const;
-  // What order() allocates.
-  static std::size_t order_bytes(std::uint64_t count, std::uint64_t parents) {
-    return (count + parents + 1) * sizeof(StateId);
+  // `parents` as in order().
+  std::span<const StateId> dense_order(std::uint64_t count, StateId* parents = nullptr);
+  // After order() or dense_order() of `count` ids: the new id of the state with id
+  // first + t at [t], first + its place in the order (a hole's entry is garbage). Valid
+  // until the next order(), dense_order() or new_ids().
+  std::span<const StateId> new_ids(std::span<const StateId> order, std::uint64_t count,
+                                   std::uint32_t threads = 1);
+  // What the buffers of order() and new_ids() take, and what they need beyond that for a
+  // level of `count` ids. They are kept from level to level, so that their pages are
+  // written in once (for the largest level), not at every level.
+  std::size_t order_bytes() const { return order_.bytes() + staged_.bytes(); }
+  std::size_t order_growth_bytes(std::uint64_t count) const {
+    const std::size_t needed = 2 * count * sizeof(StateId);
+    return needed > order_bytes() ? needed - order_bytes() : 0;
   }
 
 private:
@@ -102,6 +114,8 @@ private:
   MappedArray<std::uint64_t> keys_;
   MappedArray<std::uint32_t> slots_;
   bool slots_valid_ = true;
+  // order()'s result, and the states it stages by bucket of parents (then new_ids()).
+  MappedArray<StateId> order_, staged_;
 };
 
 } // namespace checker

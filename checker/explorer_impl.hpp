@@ -68,17 +68,17 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
   level_states.set_writers(workers.size());
   Discovery discovery;
   // The memory limit counts the store, the parents, the edges, the discovery keys of the
-  // level being built, the workers' buffers, (fingerprint store) the two levels' states,
-  // and, while several workers build a level, what its renumbering will need at least
-  // (level_end.hpp).
-  bool concurrent = false;                // the level being expanded has several workers
-  std::size_t active_workers = 1;         // expanding it
-  StateId level_begin = 0, level_end = 0; // its frontier
+  // level being built and its buffers for the level's end, the workers' buffers, (fingerprint
+  // store) the two levels' states, and, while several workers build a level, what its renumbering
+  // will need at least (level_end.hpp).
+  bool concurrent = false;        // the level being expanded has several workers
+  std::size_t active_workers = 1; // expanding it
+  StateId level_end = 0;          // the end of its frontier
   MemoryBudget budget(memory_left(limits), [&] {
     std::size_t bytes =
         ex.memory_bytes() + discovery.bytes(ex.store.size()) + (states ? states->bytes() : 0);
     if (concurrent)
-      bytes += renumbering_bytes(ex.store.size() - level_end, level_end - level_begin);
+      bytes += renumbering_bytes(discovery, ex.store.size() - level_end);
     for (const Worker& w : workers)
       bytes += w.bytes();
     return bytes;
@@ -130,14 +130,21 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
                      ex.parent.growth_bytes(parents_room() + more + id_block_size)))
       return false;
     const std::uint64_t tables = ex.store.tables_built();
-    // The ids of the level's blocks that no state took yet are holes (discovery.hpp).
+    // The ids of the level's blocks that no state took yet are holes (discovery.hpp); the
+    // level's states move in a new table, and the discovery keeps their new slots.
     std::function<bool(StateId)> holds;
-    if (concurrent)
+    std::function<void(StateId, std::uint32_t)> placed;
+    if (concurrent) {
       holds = [&](StateId id) {
         return id < discovery.first() || discovery.key_of(id) != Discovery::hole;
       };
-    ex.store.make_room(more, holds);
-    if (ex.store.tables_built() != tables) // the level's states moved in the table
+      placed = [&](StateId id, std::uint32_t slot) {
+        if (id >= discovery.first())
+          discovery.placed(id, slot);
+      };
+    }
+    ex.store.make_room(more, holds, placed);
+    if (!concurrent && ex.store.tables_built() != tables) // (no slots were kept)
       discovery.forget_slots();
     discovery.make_room(ex.store.id_limit());
     ex.parent.grow(parents_room());
@@ -152,7 +159,6 @@ Exploration explore(const tioa::SuccessorGenerator& generator, const tioa::Start
     states->next_level(end);
   while (begin < end && !stop) {
     const StateId first = end;
-    level_begin = begin;
     level_end = end;
     std::optional<StopReason> level_stop;
     for (std::size_t used = workers_for(end - begin, workers.size());;) {

@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <vector>
 
-#include "checker/parallel_for.hpp"
 
 namespace checker {
 
-std::size_t renumbering_bytes(std::uint64_t count, std::uint64_t parents) {
-  return Discovery::order_bytes(count, parents) + count * 2 * sizeof(StateId) + count / 8 + 64;
+std::size_t renumbering_bytes(const Discovery& discovery, std::uint64_t count) {
+  return discovery.order_growth_bytes(count) + count * sizeof(StateId) + count / 8 + 64;
 }
 
 std::optional<StopReason> finish_level(std::span<const Worker> workers, const Level& level,
@@ -24,9 +23,10 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
   // (expansion.hpp marks a block's ids as holes when it takes it).
   std::uint64_t count = ex.store.size() - first; // holes included, until renumbered
 
-  // Breadth-first ids: the new id of the state that had id first + t (empty: the same).
-  UninitialisedVector<StateId> renumbered; // (the holes' entries are never read)
-  UninitialisedVector<StateId> order;
+  // Breadth-first ids: the new id of the state that had id first + t (empty: the same),
+  // for the edges and the targets. (The holes' entries are never read.)
+  std::span<const StateId> renumbered;
+  std::span<const StateId> order;
   bool target = false;
   for (const Worker& w : workers)
     target = target || !w.targets.empty();
@@ -41,7 +41,7 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
   if (level.concurrent()) { // (one worker inserted in key order and wrote the parents)
     // The level's holes must go whatever the memory limit says; past it, the run stops.
     // The states move through a copy of the level when it fits, else one at a time.
-    const std::size_t bytes = renumbering_bytes(count, level.end - level.begin) +
+    const std::size_t bytes = renumbering_bytes(discovery, count) +
                               (level.states ? level.states->reorder_bytes(count) : 0);
     const bool in_place = !budget.fits(bytes + ex.store.reorder_copy_bytes(first));
     if (in_place && !budget.fits(bytes)) {
@@ -49,29 +49,26 @@ std::optional<StopReason> finish_level(std::span<const Worker> workers, const Le
       stop = StopReason::memory_limit;
     }
     const auto threads = static_cast<std::uint32_t>(workers.size());
-    order = cut_short ? discovery.dense_order(count)
-                      : discovery.order(count, level.begin, level.end, threads);
-    renumbered.resize(count);
-    parallel_for(threads, order.size(), [&](std::uint64_t begin, std::uint64_t end) {
-      for (std::uint64_t i = begin; i < end; ++i)
-        renumbered[order[i] - first] = static_cast<StateId>(first + i);
-    });
+    // The parents come with the order, from the keys (whose memory then takes the copy
+    // of the level that the store's renumbering moves its states through). Room for
+    // as many as the level's ids, holes included (a few): the order tells how many.
+    const bool parents_fit = budget.grow_within(ex.parent, count);
+    const std::size_t parents_before = ex.parent.size();
+    StateId* parents = nullptr;
+    if (parents_fit) {
+      ex.parent.resize(parents_before + count);
+      parents = ex.parent.data() + parents_before;
+    }
+    order = cut_short ? discovery.dense_order(count, parents)
+                      : discovery.order(count, level.begin, level.end, threads, parents);
+    if (parents_fit)
+      ex.parent.resize(parents_before + order.size());
+    if (target || (record_edges && !cut_short))
+      renumbered = discovery.new_ids(order, count, threads);
     if (level.states)
       level.states->reorder(order, count);
     const std::uint64_t held = count; // holes included
     count = order.size();
-    // The parents first: the keys are read then, and their memory takes the copy of the
-    // level that the store's renumbering moves its states through.
-    const bool parents_fit = budget.grow_within(ex.parent, count);
-    if (parents_fit) {
-      const std::size_t parents_before = ex.parent.size();
-      ex.parent.resize(parents_before + count);
-      StateId* parent = ex.parent.data() + parents_before;
-      parallel_for(threads, count, [&](std::uint64_t begin, std::uint64_t end) {
-        for (std::uint64_t i = begin; i < end; ++i)
-          parent[i] = Discovery::parent_of(discovery.key_of(order[i]));
-      });
-    }
     if (cut_short)
       ex.store.fill_holes(first, order, discovery.slots());
     else

@@ -27,11 +27,12 @@
 
 namespace checker {
 
-// What renumbering a level of `count` states (holes included) after `parents` frontier
-// states holds at least, when its states move in place: the order, the new ids, the
-// store's slots and the store's bit per state. The explorer counts it as held while a
+// What renumbering a level of `count` states (holes included) adds at least to what the
+// explorer holds, when its states move in place: the discovery's buffers for the order
+// and the new ids beyond what they hold already, the store's slots and the store's bit
+// per state. The explorer counts it as held while a
 // level with several workers grows, so that the level's end fits in the memory limit.
-std::size_t renumbering_bytes(std::uint64_t count, std::uint64_t parents);
+std::size_t renumbering_bytes(const Discovery& discovery, std::uint64_t count);
 
 // Why the run stops after this level, if it does: a target found, the state limit, or
 // the memory limit (met while the store grew or the level was numbered).

@@ -59,7 +59,8 @@ std::size_t StateStore::room_bytes(std::uint64_t more) const {
   return bytes;
 }
 
-void StateStore::make_room(std::uint64_t more, const std::function<bool(StateId)>& holds) {
+void StateStore::make_room(std::uint64_t more, const std::function<bool(StateId)>& holds,
+                           const std::function<void(StateId, std::uint32_t)>& placed) {
   const std::uint64_t needed = size() + more + slack_;
   if (needed > max_states + slack_)
     throw std::length_error("state store is full (3 * 2^30 states)");
@@ -70,7 +71,7 @@ void StateStore::make_room(std::uint64_t more, const std::function<bool(StateId)
     arena_bytes_ = arena_states * words_ * sizeof(Word);
   }
   if (const std::uint32_t bits = bits_for(needed); bits > bits_)
-    rebuild(bits, holds);
+    rebuild(bits, holds, placed);
   update_room();
 }
 
@@ -79,7 +80,8 @@ void StateStore::update_room() {
   room_ = fits > slack_ ? fits - slack_ : 0;
 }
 
-void StateStore::rebuild(std::uint32_t bits, const std::function<bool(StateId)>& holds) {
+void StateStore::rebuild(std::uint32_t bits, const std::function<bool(StateId)>& holds,
+                         const std::function<void(StateId, std::uint32_t)>& placed) {
   ++tables_built_;
   table_.release();
   bits_ = bits;
@@ -87,12 +89,13 @@ void StateStore::rebuild(std::uint32_t bits, const std::function<bool(StateId)>&
   table_ = MappedArray<std::uint32_t>(mask_ + 1);
   const bool concurrent = threads_ > 1;
   parallel_for(threads_, size(), [&](std::uint64_t begin, std::uint64_t end) {
-    fill(begin, end, holds, concurrent);
+    fill(begin, end, holds, placed, concurrent);
   });
 }
 
 void StateStore::fill(std::uint64_t begin, std::uint64_t end,
-                      const std::function<bool(StateId)>& holds, bool concurrent) {
+                      const std::function<bool(StateId)>& holds,
+                      const std::function<void(StateId, std::uint32_t)>& placed, bool concurrent) {
   // A ring of the next states to place, their slots prefetched.
   std::uint64_t ids[rebuild_prefetch], hashes[rebuild_prefetch];
   std::uint64_t head = 0, queued = 0, next = begin;
@@ -107,26 +110,29 @@ void StateStore::fill(std::uint64_t begin, std::uint64_t end,
     }
     if (queued == 0)
       return;
-    place(static_cast<StateId>(ids[head]), hashes[head], concurrent);
+    const auto id = static_cast<StateId>(ids[head]);
+    const std::uint32_t slot = place(id, hashes[head], concurrent);
+    if (placed)
+      placed(id, slot);
     head = (head + 1) % rebuild_prefetch;
     --queued;
   }
 }
 
-void StateStore::place(StateId id, std::uint64_t hash, bool concurrent) {
+std::uint32_t StateStore::place(StateId id, std::uint64_t hash, bool concurrent) {
   const auto value = static_cast<std::uint32_t>((tag_of(hash) << bits_) | (std::uint64_t{id} + 1));
   for (std::uint64_t at = hash & mask_;; at = (at + 1) & mask_) {
     if (!concurrent) {
       if (table_[at] == 0) {
         table_[at] = value;
-        return;
+        return static_cast<std::uint32_t>(at);
       }
       continue;
     }
     std::uint32_t empty = 0;
     if (std::atomic_ref<std::uint32_t>(table_[at])
             .compare_exchange_strong(empty, value, std::memory_order_relaxed))
-      return;
+      return static_cast<std::uint32_t>(at);
   }
 }
 

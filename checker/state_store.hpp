@@ -143,7 +143,10 @@ public:
   std::size_t room_bytes(std::uint64_t more) const;
   // `holds(id)` says which ids below size() hold a state when some do not (the unused
   // ids of blocks handed out during a level): only those go into a new table.
-  void make_room(std::uint64_t more, const std::function<bool(StateId)>& holds = {});
+  // `placed(id, slot)`, when given, hears where a new table puts each id (so that a
+  // level's renumbering need not look its states up again).
+  void make_room(std::uint64_t more, const std::function<bool(StateId)>& holds = {},
+                 const std::function<void(StateId, std::uint32_t)>& placed = {});
 
   // find_or_insert inserts while size() is below this (then it says `full`).
   std::uint64_t room() const { return room_; }
@@ -213,8 +216,10 @@ private:
   // The table bits and arena capacity (in states) for `states` states and the slack.
   std::uint32_t bits_for(std::uint64_t states) const;
   std::uint64_t arena_states_for(std::uint64_t states) const;
-  // The table with 2^bits slots, filled from the arena (the ids `holds`, all when empty).
-  void rebuild(std::uint32_t bits, const std::function<bool(StateId)>& holds = {});
+  // The table with 2^bits slots, filled from the arena (the ids `holds`, all when empty;
+  // `placed` as in make_room()).
+  void rebuild(std::uint32_t bits, const std::function<bool(StateId)>& holds = {},
+               const std::function<void(StateId, std::uint32_t)>& placed = {});
   void update_room();
   std::uint64_t hash_of(std::uint64_t id) const {
     return hash_state(state(static_cast<StateId>(id)), words_);
@@ -222,9 +227,9 @@ private:
   // Puts the states of ids [begin, end) (those `holds`, all when empty) in the table;
   // `concurrent`: other threads fill other ranges at once.
   void fill(std::uint64_t begin, std::uint64_t end, const std::function<bool(StateId)>& holds,
-            bool concurrent);
-  // Puts `id` in the table (no lookup uses it meanwhile).
-  void place(StateId id, std::uint64_t hash, bool concurrent);
+            const std::function<void(StateId, std::uint32_t)>& placed, bool concurrent);
+  // Puts `id` in the table (no lookup uses it meanwhile); the slot it took.
+  std::uint32_t place(StateId id, std::uint64_t hash, bool concurrent);
 
   std::uint32_t words_;
   std::uint32_t bits_ = 0; // m: 2^m slots

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <mutex>
 #include <random>
 #include <unordered_map>
 #include <vector>
@@ -285,4 +286,43 @@ TEST_CASE("truncate forgets the states after the first n", "[checker][state_stor
   CHECK(find(store, {999 * 7}) == StateId{999});
   CHECK_FALSE(find(store, {1000 * 7}));
   CHECK(insert(store, {1000 * 7}) == std::make_pair(StateId{1000}, true));
+}
+
+TEST_CASE("a growing table says where it puts each state, with its holes left out",
+          "[checker][state_store]") {
+  StateStore store(1);
+  store.set_inserters(2, 4);
+  StateStore::IdBlock ids{0, 0, 4};
+  for (Word w = 0; w < 500; ++w) {
+    const Words s{w * 7919};
+    StateStore::Claim claim;
+    while ((claim = store.find_or_insert(s.data(), hash_state(s.data(), 1), ids,
+                                         [](StateId, std::uint32_t) {}))
+               .kind == StateStore::Claim::Kind::full)
+      store.make_room(1);
+    REQUIRE(claim.kind == StateStore::Claim::Kind::fresh);
+  }
+  // Ids from 100 on: every third one is a hole (no state is looked up at it).
+  auto holds = [](StateId id) { return id < 100 || id % 3 != 0; };
+  std::map<StateId, std::uint32_t> placed;
+  std::mutex placing; // (the table may be filled by two threads)
+  bool twice = false;
+  const std::uint64_t tables = store.tables_built();
+  store.make_room(5000, holds, [&](StateId id, std::uint32_t slot) {
+    const std::lock_guard<std::mutex> lock(placing);
+    twice = twice || !placed.emplace(id, slot).second;
+  });
+  CHECK_FALSE(twice);
+  REQUIRE(store.tables_built() > tables);
+  std::size_t held = 0, wrong = 0;
+  for (StateId id = 0; id < store.size(); ++id) {
+    if (!holds(id)) {
+      CHECK(placed.count(id) == 0);
+      continue;
+    }
+    ++held;
+    wrong += placed.count(id) == 0 || placed.at(id) != store.slot_of(id);
+  }
+  CHECK(placed.size() == held);
+  CHECK(wrong == 0);
 }
