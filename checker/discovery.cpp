@@ -16,11 +16,6 @@ constexpr std::uint64_t bucket_parents = 4096;
 // The ids a thread counts and places at least (fewer threads below that).
 constexpr std::uint64_t ids_per_thread = std::uint64_t{1} << 16;
 
-// Room for `n` elements; the mapping grows without a copy, keeping the pages it has.
-void fit(MappedArray<StateId>& array, std::uint64_t n) {
-  array.reserve(n);
-}
-
 } // namespace
 
 std::span<const StateId> Discovery::order(std::uint64_t count, StateId parents_begin,
@@ -62,8 +57,9 @@ std::span<const StateId> Discovery::order(std::uint64_t count, StateId parents_b
       states += std::exchange(place[r * buckets + b], states);
   }
   bucket_start[buckets] = states;
-  fit(order_, count);
-  fit(staged_, count);
+  // (The buffers grow without a copy and keep the pages they have: mapped_memory.hpp.)
+  order_.reserve(count);
+  staged_.reserve(count);
   each(ranges, [&](std::uint64_t r) {
     std::uint64_t* next = place.data() + r * buckets;
     for (std::uint64_t t = range_begin(r), end = range_begin(r + 1); t < end; ++t)
@@ -116,7 +112,7 @@ std::span<const StateId> Discovery::dense_order(std::uint64_t count, StateId* pa
   std::uint64_t states = 0;
   for (std::uint64_t t = 0; t < count; ++t)
     states += keys_[t] != hole;
-  fit(order_, states);
+  order_.reserve(states);
   // The holes below `states` are as many as the states from `states` on.
   std::uint64_t back = count;
   for (std::uint64_t t = 0; t < states; ++t) {
@@ -137,7 +133,7 @@ std::span<const StateId> Discovery::dense_order(std::uint64_t count, StateId* pa
 
 std::span<const StateId> Discovery::new_ids(std::span<const StateId> order, std::uint64_t count,
                                             std::uint32_t threads) {
-  fit(staged_, count);
+  staged_.reserve(count);
   parallel_for(threads, order.size(), [&](std::uint64_t begin, std::uint64_t end) {
     for (std::uint64_t i = begin; i < end; ++i)
       staged_[order[i] - first_] = static_cast<StateId>(first_ + i);
