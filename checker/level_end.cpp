@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <vector>
 
-
 namespace checker {
 
 std::size_t renumbering_bytes(const Discovery& discovery, std::uint64_t count) {
