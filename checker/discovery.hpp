@@ -52,8 +52,10 @@ public:
   void found(StateId id, std::uint64_t key) { keys_[id - first_] = key; }
   // ... placed in the store's table at `slot` (kept when the level is to be renumbered).
   void placed(StateId id, std::uint32_t slot) { slots_[id - first_] = slot; }
-  // Where the store's table held the level's states when they were inserted; stale once
-  // the table has grown during the level (`slots_valid` false).
+  // Where the store's table holds the level's states: placed() at their insertion, and
+  // again when a new table takes them (StateStore::make_room's `placed`, which the
+  // explorer passes while several workers build the level). A table that grew without
+  // telling (one worker: no renumbering needs them) calls forget_slots(): none then.
   const std::uint32_t* slots() const { return slots_valid_ ? slots_.data() : nullptr; }
   void forget_slots() { slots_valid_ = false; }
   // A state of this level found again: it keeps the smaller key. `concurrent`: other
