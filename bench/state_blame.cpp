@@ -1,10 +1,12 @@
 // Which variables make a model's states many: explores a built-in model from its start
 // states (breadth first, up to a number of states, with or without the reduction of
-// zero-time steps) and, for each variable and each array of variables (the names before
-// '['), counts the distinct states left when that variable is left out. A variable whose
-// removal leaves few states is what the search spends its states on; a variable whose
-// removal changes nothing does not matter to the count. With --time-passing only the
-// states where time can pass are counted (the ones the reduction expands in full).
+// zero-time steps) and, for each variable and each group of variables (an array: the names
+// before '['; a component: before the first '.', shown as "VN_4.*"; a kind across
+// components and arrays: the name with its numbers as '#', "VN_#.V[#]"), counts the distinct states
+// left when that variable is left out. A variable whose removal leaves few states is what the
+// search spends its states on; a variable whose removal changes nothing does not matter to the
+// count. With --time-passing only the states where time can pass are counted (the ones the
+// reduction expands in full).
 //
 // Run: build/bench/state_blame MODEL [-p NAME=VALUE ...] [--states N] [--por on|off]
 //      [--time-passing] [--threads N]
@@ -84,6 +86,24 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
+// The groups a variable is counted in: itself, its array (the name before '['), its
+// component (the name before the first '.'), and its kind across components and arrays
+// (every digit replaced by '#': "VN_#.V[#]").
+std::vector<std::string> group_names(const std::string& name) {
+  std::string kind = name;
+  for (char& c : kind)
+    if (c >= '0' && c <= '9')
+      c = '#';
+  kind.erase(
+      std::unique(kind.begin(), kind.end(), [](char a, char b) { return a == '#' && b == '#'; }),
+      kind.end());
+  std::vector<std::string> groups{name, name.substr(0, name.find('[')),
+                                  name.substr(0, name.find('.')) + ".*", kind};
+  std::sort(groups.begin(), groups.end());
+  groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+  return groups;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -121,7 +141,7 @@ int main(int argc, char** argv) {
     // The bits of each variable and of each array (its name before '[').
     std::map<std::string, std::vector<Word>> masks;
     for (const tioa::VariableInfo& v : system.layout().variables()) {
-      for (const std::string& name : {v.name, v.name.substr(0, v.name.find('['))}) {
+      for (const std::string& name : group_names(v.name)) {
         std::vector<Word>& mask = masks[name];
         mask.resize(words, 0);
         for (std::uint32_t b = v.offset; b < v.offset + v.width; ++b)
