@@ -20,7 +20,8 @@ Usage:
   bench/thread_speedup.py --rounds 12 --threads 2 --binary build/cli/tioa-check
   bench/thread_speedup.py --model fischer --param N=10 --prop mutex
 
-Exit codes: 0 the counts agree, 1 a run failed or the counts differ, 2 usage error.
+Exit codes: 0 the counts agree, 1 a run failed or the counts differ, 2 usage error or
+/usr/bin/time missing (apt-get install time).
 Python 3, standard library only.
 """
 
@@ -73,6 +74,9 @@ def main():
     if args.threads < 2 or args.rounds < 1:
         print("thread_speedup.py: --threads must be at least 2 and --rounds at least 1",
               file=sys.stderr)
+        return 2
+    if not Path(TIME).is_file():
+        print(f"thread_speedup.py: {TIME} is missing (apt-get install time)", file=sys.stderr)
         return 2
     if not Path(args.binary).is_file():
         print(f"thread_speedup.py: no binary at {args.binary} (build the tioa-check target)",
