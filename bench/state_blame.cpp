@@ -20,7 +20,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <map>
 #include <string>
 #include <unordered_set>
@@ -28,6 +27,7 @@
 
 #include "catalogue/builtin.hpp"
 #include "checker/explorer.hpp"
+#include "tioa/state_hash.hpp"
 
 namespace {
 
@@ -35,10 +35,7 @@ using tioa::Word;
 
 struct WordsHash {
   std::size_t operator()(const std::vector<Word>& v) const {
-    std::uint64_t h = 0x9E3779B97F4A7C15ull;
-    for (const Word w : v)
-      h = (h ^ w) * 0xBF58476D1CE4E5B9ull ^ (h >> 29);
-    return h;
+    return tioa::hash_state(v.data(), static_cast<std::uint32_t>(v.size()));
   }
 };
 
@@ -68,9 +65,12 @@ Options parse(int argc, char** argv) {
       o.settings.emplace_back(argv[++i]);
     else if (a == "--states" && has_value)
       o.states = std::strtoull(argv[++i], nullptr, 10);
-    else if (a == "--por" && has_value)
-      o.por = std::strcmp(argv[++i], "off") != 0;
-    else if (a == "--threads" && has_value)
+    else if (a == "--por" && has_value) {
+      const std::string value = argv[++i];
+      if (value != "on" && value != "off")
+        usage("--por takes on or off");
+      o.por = value == "on";
+    } else if (a == "--threads" && has_value)
       o.threads = static_cast<unsigned>(std::strtoul(argv[++i], nullptr, 10));
     else if (a == "--time-passing")
       o.time_passing = true;
@@ -138,7 +138,7 @@ int main(int argc, char** argv) {
                                                          : "cut at the state limit",
                 counted.size(), o.time_passing ? " (those where time can pass)" : "");
 
-    // The bits of each variable and of each array (its name before '[').
+    // The bits of each variable and of each group it is in (group_names).
     std::map<std::string, std::vector<Word>> masks;
     for (const tioa::VariableInfo& v : system.layout().variables()) {
       for (const std::string& name : group_names(v.name)) {
