@@ -15,14 +15,20 @@ PropertyResult check_no_deadlock(const Automaton& system, const ExploreOptions& 
   const tioa::SuccessorGenerator generator(system);
   std::optional<ZeroTimeReduction> reduction;
   if (options.por)
-    reduction.emplace(generator, tioa::StatePredicate{});
+    reduction.emplace(generator, tioa::StatePredicate{}, true);
   if (Collective* ranks = distributed()) {
-    return check_no_deadlock_distributed(generator, system.start(), ended, ended_name, options,
-                                         reduction ? &*reduction : nullptr, *ranks);
+    PropertyResult r =
+        check_no_deadlock_distributed(generator, system.start(), ended, ended_name, options,
+                                      reduction ? &*reduction : nullptr, *ranks);
+    if (reduction)
+      reduction->note_time_passing(r.notes, r.reduced_states);
+    return r;
   }
   const Exploration ex =
       explore(generator, system.start(), options, hooks(), reduction ? &*reduction : nullptr);
   PropertyResult r = result_of("deadlock", ex, generator);
+  if (reduction)
+    reduction->note_time_passing(r.notes, r.reduced_states);
   const char* what = generator.timed() ? "time-lock" : "deadlock";
   std::vector<StateId> stuck; // the stuck states that are not proper ends
   for (const StateId id : ex.stuck) {

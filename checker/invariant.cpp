@@ -11,10 +11,13 @@ PropertyResult check_invariant(const Automaton& system, const StatePredicate& in
   const tioa::SuccessorGenerator generator(system);
   std::optional<ZeroTimeReduction> reduction;
   if (options.por)
-    reduction.emplace(generator, invariant);
+    reduction.emplace(generator, invariant, true);
   if (Collective* ranks = distributed()) {
-    return check_invariant_distributed(generator, system.start(), invariant, options,
-                                       reduction ? &*reduction : nullptr, *ranks);
+    PropertyResult r = check_invariant_distributed(generator, system.start(), invariant, options,
+                                                   reduction ? &*reduction : nullptr, *ranks);
+    if (reduction)
+      reduction->note_time_passing(r.notes, r.reduced_states);
+    return r;
   }
   const Exploration ex =
       explore(generator, system.start(), options,
@@ -22,6 +25,8 @@ PropertyResult check_invariant(const Automaton& system, const StatePredicate& in
               reduction ? &*reduction : nullptr);
 
   PropertyResult r = result_of("invariant", ex, generator);
+  if (reduction)
+    reduction->note_time_passing(r.notes, r.reduced_states);
   if (ex.found) {
     r.verdict = Verdict::violated;
     r.trace = trace_to(generator, ex, *ex.found);

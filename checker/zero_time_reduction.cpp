@@ -52,7 +52,7 @@ template <class Visit> void for_each_action(const Word* actions, std::uint32_t w
 } // namespace
 
 ZeroTimeReduction::ZeroTimeReduction(const tioa::SuccessorGenerator& generator,
-                                     tioa::StatePredicate invariant)
+                                     tioa::StatePredicate invariant, bool time_passing)
     : generator_(&generator), invariant_(std::move(invariant)), table_(generator.automaton()),
       words_(generator.words()), action_words_(table_.action_words()) {
   // Every action reads and writes every bit some action touches: no step is independent
@@ -77,11 +77,27 @@ ZeroTimeReduction::ZeroTimeReduction(const tioa::SuccessorGenerator& generator,
   // A halt flag is left out of the dependencies only where the graph has no cycle (the
   // header says why); without a progress measure it is a variable like the others.
   const tioa::Automaton& automaton = generator.automaton();
+  commuting_.assign(table_.actions(), 0);
+  bool any_commuting = false;
+  for (std::uint32_t a = 0; a < table_.actions(); ++a) {
+    commuting_[a] = automaton.transitions()[a].commutes_with_time() ? 1 : 0;
+    any_commuting = any_commuting || commuting_[a];
+  }
+  time_passing_ = time_passing && automaton.trajectory().timed && any_commuting && can_reduce_;
+  time_bits_.assign(words_, 0);
+  automaton.trajectory().footprint(time_bits_.data(), automaton.layout().bits());
   ignored_.assign(words_, 0);
   if (automaton.halt_flag() && automaton.progress_measure()) {
     halt_ = automaton.halt_flag();
     tioa::set_bits(ignored_.data(), halt_->offset, halt_->width);
   }
+}
+
+void ZeroTimeReduction::note_time_passing(std::vector<std::string>& notes,
+                                          std::uint64_t reduced_states) const {
+  if (time_passing_ && reduced_states > 0)
+    notes.push_back("--por on also reduced states where time can pass: steps declared to "
+                    "commute with time (checked at each such state) were left for later there");
 }
 
 void ZeroTimeReduction::drop_ignored(Word* mask) const {
@@ -138,8 +154,16 @@ const StepTable::Values& ZeroTimeReduction::writer_values(std::uint32_t action, 
                                too_many = true;
                            });
   out.known = !too_many;
-  for (std::uint32_t w = 0; w < words_ && out.known; ++w)
-    out.known = (probe[w] & ~table_.instant_constant()[w]) == 0;
+  // The binders may also read bits that steps change: their values hold along every path
+  // outside the set once the steps that may write them are in it (freeze).
+  s.frozen.assign(words_, 0);
+  bool outside = false;
+  for (std::uint32_t w = 0; w < words_; ++w) {
+    s.frozen[w] = probe[w] & ~table_.instant_constant()[w];
+    outside = outside || s.frozen[w] != 0;
+  }
+  if (out.known && outside)
+    out.known = freeze(s.frozen.data(), s);
   if (!out.known)
     return table_.box_values(action);
   out.plain.assign(words_, 0);
@@ -157,6 +181,29 @@ const StepTable::Values& ZeroTimeReduction::writer_values(std::uint32_t action, 
   }
   out.finish(table_.fields(), words_);
   return out;
+}
+
+bool ZeroTimeReduction::freeze(const Word* bits, Scratch& s) const {
+  Word* writers = s.freezers.data();
+  std::fill(s.freezers.begin(), s.freezers.end(), 0);
+  table_.gather_writers(bits, writers);
+  bool disabled = true;
+  for_each_action(writers, action_words_, [&](std::uint32_t b) {
+    if (!disabled)
+      return;
+    if (!table_.small(b)) {
+      disabled = s.first_enabled[b] == none;
+      return;
+    }
+    const std::uint32_t first = table_.first_point(b), last = first + table_.point_count(b);
+    for (std::uint32_t i = first; i < last && disabled; ++i)
+      disabled = s.step_of_point[i] == none || !intersects(table_.point_writes(i), bits, words_);
+  });
+  if (!disabled)
+    return false; // a step that may change them now: the values are not fixed
+  // Each writer joins as a step that is not enabled: its enabling set follows.
+  for_each_action(writers, action_words_, [&](std::uint32_t b) { relate(b, nullptr, bits, s); });
+  return true;
 }
 
 bool ZeroTimeReduction::writes_only_current(std::uint32_t action, const Word* state,
@@ -453,6 +500,42 @@ void ZeroTimeReduction::run_and_relate(const Word* state, std::uint32_t k, Scrat
   });
 }
 
+void ZeroTimeReduction::check_commutes(const Word* state, const Word* ticked, std::uint32_t k,
+                                       Scratch& s) const {
+  const tioa::Automaton& automaton = generator_->automaton();
+  const tioa::Trajectories& trajectory = automaton.trajectory();
+  const Scratch::Step& step = s.enabled[k];
+  const tioa::Transition& t = automaton.transitions()[step.action];
+  const std::size_t size = std::size_t{words_} + 1; // room for a field that spills over
+  s.commute.assign(2 * size, 0);
+  Word* first = s.commute.data();         // the step, then the tick
+  Word* second = s.commute.data() + size; // the tick, then the step
+  auto fail = [&](const std::string& what) {
+    throw tioa::ModelError("step " + automaton.actions()[step.action].label(step.params) +
+                           " is declared to commute with time (commutes_with_time), but " + what +
+                           " (needed by the partial-order reduction)");
+  };
+  const tioa::State here(state, 0), after_tick(ticked, 0);
+  if (!step_enabled(step.action, step.params, after_tick))
+    fail("it is not possible after a tick");
+  const std::uint32_t choices = t.choice_count(here, step.params);
+  if (t.choice_count(after_tick, step.params) != choices)
+    fail("it has another number of choices after a tick");
+  for (std::uint32_t c = 0; c < choices; ++c) {
+    std::copy(state, state + words_, first);
+    tioa::State one(first, 0);
+    t.apply(one, step.params, c);
+    if (trajectory.stops(one))
+      fail("time cannot pass after it");
+    trajectory.evolve(one);
+    std::copy(ticked, ticked + words_, second);
+    tioa::State other(second, 0);
+    t.apply(other, step.params, c);
+    if (!std::equal(first, first + words_, second))
+      fail("the step then a tick and a tick then the step lead to different states");
+  }
+}
+
 void ZeroTimeReduction::run_step(const Word* state, std::size_t k, Scratch& s, Word* reads,
                                  Word* writes, Word* changed) const {
   const tioa::Automaton& automaton = generator_->automaton();
@@ -534,7 +617,9 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
   const std::uint32_t actions = table_.actions();
   s.masks.assign(7 * std::size_t{words}, 0);
   Word* tick_reads = s.masks.data() + 3 * std::size_t{words};
-  if (trajectory.timed && !trajectory.stops(tioa::State(state, 0, tick_reads, words)))
+  const bool passing =
+      trajectory.timed && !trajectory.stops(tioa::State(state, 0, tick_reads, words));
+  if (passing && !time_passing_)
     return std::nullopt; // time can pass here
 
   // Every enabled step; each action's guard and binder reads traced together.
@@ -565,8 +650,23 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
                            signatures[s.enabled.front().action].label(s.enabled.front().params) +
                            " is enabled in a state where the halt flag '" + halt_->name +
                            "' is set (a halt flag disables every step)");
-  if (s.enabled.size() <= 1)
+  if (s.enabled.size() <= (passing ? 0u : 1u))
     return std::nullopt;
+  if (passing) {
+    // Where every enabled step would join the tick (none commutes with it, each touches
+    // what time touches), the set is every step: no need to build it.
+    const Word* time = time_bits_.data();
+    const bool all_join = std::all_of(s.enabled.begin(), s.enabled.end(), [&](const auto& e) {
+      if (commuting_[e.action])
+        return false;
+      return e.point != none ? intersects(table_.point_reads(e.point), time, words) ||
+                                   intersects(table_.point_writes(e.point), time, words)
+                             : intersects(table_.action_reads(e.action), time, words) ||
+                                   intersects(table_.action_writes(e.action), time, words);
+    });
+    if (all_join)
+      return std::nullopt;
+  }
 
   s.covered.assign(table_.points(), 0);
   s.whole.assign(actions, 0);
@@ -579,6 +679,7 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
   s.harmless.assign(action_words_, 0);
   s.writers.assign(action_words_, 0);
   s.related.assign(action_words_, 0);
+  s.freezers.assign(action_words_, 0);
   s.region.assign(words, 0);
   s.probe.assign(words, 0);
   s.synthetic.assign(words, 0);
@@ -597,9 +698,26 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
   s.order.clear();
 
   // The stubborn set.
-  if (trajectory.timed)
+  constexpr std::uint32_t tick_step = none; // sorts after every step, as the generator has it
+  std::size_t ticked = 0;                   // where the tick's successor is
+  if (passing) {
+    // The tick is in the set, enabled: every step that may touch what time touches joins,
+    // but those whose automata declare that they commute with it.
+    ticked = s.successors.size();
+    s.successors.insert(s.successors.end(), state, state + words);
+    s.successors.push_back(0); // room for a field that spills into the next word
+    tioa::State to(s.successors.data() + ticked, 0);
+    trajectory.evolve(to);
+    s.successors.pop_back();
+    s.order.emplace_back(tick_step, 0);
+    s.durations.push_back(1);
+    for (std::uint32_t a = 0; a < actions; ++a)
+      if (!commuting_[a])
+        relate(a, time_bits_.data(), time_bits_.data(), s);
+  } else if (trajectory.timed) {
     add_enablers(
         state, tick_reads, [&](const tioa::State& t) { return trajectory.stops(t); }, s);
+  }
   if (invariant_) {
     Word* reads = tick_reads; // done with
     std::fill(reads, reads + words, 0);
@@ -635,15 +753,26 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
   }
   if (s.enabled_left > 0)
     ++s.reduced;
+  if (passing && s.enabled_left > 0) {
+    // The steps left out are all declared to commute with time (the others joined with
+    // the tick): their word is checked here.
+    for (std::uint32_t k = 0; k < s.enabled.size(); ++k)
+      if (!s.ran[k])
+        check_commutes(state, s.successors.data() + ticked, k, s);
+  }
 
   // In the order of a full expansion: by action, parameters, choice.
   std::sort(s.order.begin(), s.order.end());
   std::vector<Word>& sorted = s.sorted;
   sorted.clear();
-  for (const auto& [step, at] : s.order)
+  s.sorted_durations.clear();
+  for (const auto& [step, at] : s.order) {
     sorted.insert(sorted.end(), s.successors.begin() + std::size_t{at} * words,
                   s.successors.begin() + std::size_t{at + 1} * words);
+    s.sorted_durations.push_back(s.durations[at]);
+  }
   s.successors.swap(sorted);
+  s.durations.swap(s.sorted_durations);
   return s.order.size();
 }
 

@@ -46,9 +46,35 @@
 //    so none touches what it reads or writes): it can be moved to the front, and the
 //    search, which takes it here, reaches the same state by a path one step shorter.
 // By induction on the length of that path, every such state stays reachable. States where
-// time can pass are always expanded in full. The reduced graph keeps every state the
-// checks look for, but not every state or edge: counts, and traces, are those of the
-// reduced graph (traces are real, not always the shortest).
+// time can pass are expanded in full, unless the check asks for the next part. The
+// reduced graph keeps every state the checks look for, but not every state or edge:
+// counts, and traces, are those of the reduced graph (traces are real, not always the
+// shortest).
+//
+// States where time can pass (issue 14; only for checks that look for states: an
+// invariant's failure, a deadlock or time-lock; the constructor's `time_passing`). There
+// the tick is in the set as an enabled step, and with it every step that may touch what
+// time may touch (the whole state of every timed component, and the flags that freeze
+// it: Trajectories::footprint, a bound that holds in every state), except the steps whose
+// every part declares that it commutes with a tick (TransitionBuilder::commutes_with_time:
+// in every state where both can happen the step stays possible after the tick, time can
+// still pass after the step, and either order gives the same state). A vlayer-mc delivery
+// is such a step: its slot's age advances only while it is pending. The rest is built as
+// above (steps in the set that are not enabled bring their enabling sets; the predicate's
+// writers join), and every enabled step left out is checked against its declaration here
+// (check_commutes: a ModelError when it does not hold in this state). Why it is sound, by
+// the same induction: along a path from this state that avoids the set, each step either
+// commutes with the tick by its declaration or touches nothing time touches, so (i) time
+// can still pass at every state of the path (the key step stays enabled: no path avoiding
+// the set ends in a deadlock or time-lock) and the predicate keeps its value; (ii) a tick
+// at the end of such a path can be moved to its front, one step at a time, and the search
+// takes the tick here. A path to a state the check looks for contains a step of the set
+// (i); the first one is the tick or a step that commutes with every step before it as
+// above; moved to the front (ii), it leaves a path one step shorter. Nothing needs every
+// cycle kept: these checks look for states, not executions, and each step left out stays
+// possible until it is taken or disabled. The worst time of stabilisation, and any check
+// that reads every state where time passes (the simulation relation, vn-emulation's
+// replica consistency), keep these states expanded in full.
 //
 // An untimed automaton has no tick: every state is reduced, with no set for the
 // stop-when condition; the argument above is unchanged (it never needed time to pass).
@@ -84,7 +110,11 @@ using tioa::Word;
 class ZeroTimeReduction {
 public:
   // `invariant`: the predicate whose failure the check looks for (empty: none).
-  ZeroTimeReduction(const tioa::SuccessorGenerator& generator, tioa::StatePredicate invariant);
+  // `time_passing`: also reduce states where time can pass (see "States where time can
+  // pass" above); only for checks that look for states (an invariant's failure, a
+  // deadlock or time-lock), not for those that measure time or follow executions.
+  ZeroTimeReduction(const tioa::SuccessorGenerator& generator, tioa::StatePredicate invariant,
+                    bool time_passing = false);
 
   // What one worker needs to expand a state; it keeps its memory from state to state.
   struct Scratch {
@@ -116,6 +146,7 @@ public:
     std::uint32_t enabled_left = 0;                             // enabled steps not run yet
     std::vector<std::pair<std::uint32_t, std::uint32_t>> order; // (step, successor)
     std::vector<Word> sorted;
+    std::vector<std::uint32_t> sorted_durations;
     // A run step's reads, writes, changes; a predicate's reads; what the step read or wrote
     // and left unchanged, and all it touched; the widened part of a region.
     std::vector<Word> masks;
@@ -134,6 +165,9 @@ public:
     std::vector<std::uint32_t> bound_stamp;
     std::uint32_t stamp = 0;
     std::vector<Word> predicate_reads; // what a predicate read, less the halt flag
+    std::vector<Word> frozen;          // bits a writer's binders read that steps change
+    std::vector<Word> commute;         // four states: a step's word checked (check_commutes)
+    std::vector<Word> freezers;        // bit set of the actions that may write them
     std::uint64_t reduced = 0;         // states where fewer steps than enabled were taken
   };
 
@@ -142,6 +176,12 @@ public:
   // explored because time can pass there (or one step at most is enabled): the caller then
   // runs the generator.
   std::optional<std::size_t> reduce(const Word* state, Scratch& scratch) const;
+
+  // Whether states where time can pass are reduced too (the constructor's `time_passing`,
+  // and some action commutes with time).
+  bool reduces_time_passing() const { return time_passing_; }
+  // Adds to a check's notes that states where time can pass were reduced, when they were.
+  void note_time_passing(std::vector<std::string>& notes, std::uint64_t reduced_states) const;
 
   // Whether some set can be smaller than every enabled step: false when no action
   // declares a footprint narrower than the whole state (e.g. Fischer), since then every
@@ -178,9 +218,16 @@ private:
   // What `action` may write within this instant: over its box, or, when its parameters
   // are bound to what only time changes, over the steps those values give.
   const StepTable::Values& writer_values(std::uint32_t action, const Word* state, Scratch& s) const;
+  // Puts in the set every step that may write `bits` (none is enabled here: else false, and
+  // nothing joins), so that along every path outside the set they keep their values.
+  bool freeze(const Word* bits, Scratch& s) const;
   // Whether `action` can only write, on the fields of `mask`, the values they hold.
   bool writes_only_current(std::uint32_t action, const Word* state, const Word* mask,
                            Scratch& s) const;
+  // At a state where time can pass: checks that the enabled step `k`, left out of the set,
+  // commutes with the tick whose successor is `ticked`, as its automaton declares; a
+  // ModelError if not.
+  void check_commutes(const Word* state, const Word* ticked, std::uint32_t k, Scratch& s) const;
   // Clears the halt flag's bits from `mask` (when it is left out of dependencies).
   void drop_ignored(Word* mask) const;
   // The name of the variable that holds the first bit of `bits`.
@@ -195,8 +242,11 @@ private:
   std::uint32_t words_;
   std::uint32_t action_words_; // words of a bit set of actions
   bool can_reduce_ = true;
-  std::optional<tioa::Slot> halt_; // the halt flag, when left out of dependencies
-  std::vector<Word> ignored_;      // its bits
+  bool time_passing_ = false;           // states where time can pass are reduced too
+  std::vector<std::uint8_t> commuting_; // per action: commutes with time (declared)
+  std::vector<Word> time_bits_;         // what time may read or change
+  std::optional<tioa::Slot> halt_;      // the halt flag, when left out of dependencies
+  std::vector<Word> ignored_;           // its bits
 };
 
 } // namespace checker

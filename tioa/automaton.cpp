@@ -32,6 +32,11 @@ TransitionBuilder& TransitionBuilder::footprint(FootprintFunction footprint) {
   return *this;
 }
 
+TransitionBuilder& TransitionBuilder::commutes_with_time() {
+  automaton_->transition(action_).parts.front().commutes_with_time = true;
+  return *this;
+}
+
 TransitionBuilder& TransitionBuilder::bind(const std::string& param, Binder value) {
   Binding b;
   b.value = std::move(value);
@@ -251,8 +256,9 @@ std::size_t Automaton::add_action(ActionSignature signature, Transition transiti
 }
 
 void Automaton::trajectories(Evolve evolve, StatePredicate stop_when) {
-  trajectories_ =
-      Trajectories{true, {TrajectoryPart{std::move(evolve), std::move(stop_when), 0, {}}}};
+  trajectories_ = Trajectories{
+      true,
+      {TrajectoryPart{std::move(evolve), std::move(stop_when), 0, {}, TransitionPart::own_state}}};
 }
 
 const StartSet& Automaton::start() const {

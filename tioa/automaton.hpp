@@ -41,6 +41,13 @@ public:
   TransitionBuilder& choose(std::uint32_t count, ChoiceEffect effect);
   // What the transition may read and write (tioa/footprint.hpp); without it, everything.
   TransitionBuilder& footprint(FootprintFunction footprint);
+  // The author's word that the step commutes with a tick of this automaton's time: in
+  // every state where both can happen, the step stays possible after the tick, time can
+  // still pass after the step, and step-then-tick and tick-then-step (with the same
+  // choice) lead to the same state. The zero-time reduction may then leave the step out
+  // at a state where time can pass (checker/zero_time_reduction.hpp), and checks the
+  // word on every such state.
+  TransitionBuilder& commutes_with_time();
   // Binds the parameter named `param` (see Binder); not for inputs, which every value of
   // their box may drive. A ModelError for an unknown parameter or one bound twice.
   TransitionBuilder& bind(const std::string& param, Binder value);

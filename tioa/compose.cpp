@@ -203,7 +203,7 @@ Automaton compose(const std::string& name, const std::vector<Automaton>& compone
   for (const auto& p : placed)
     if (p.automaton->timed()) {
       Trajectories part = p.automaton->trajectory();
-      part.place(p.base);
+      part.place(p.base, p.automaton->layout().bits());
       time.timed = true;
       time.parts.insert(time.parts.end(), part.parts.begin(), part.parts.end());
     }

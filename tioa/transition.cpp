@@ -89,11 +89,23 @@ bool Trajectories::stops_parts(const State& s) const {
   return false;
 }
 
-void Trajectories::place(std::uint32_t base) {
+void Trajectories::place(std::uint32_t base, std::uint32_t bits) {
   for (TrajectoryPart& part : parts) {
+    if (part.bits == TransitionPart::own_state)
+      part.bits = bits;
     part.base += base;
     for (Slot& flag : part.frozen_by)
       flag.offset += base;
+  }
+}
+
+void Trajectories::footprint(Word* mask, std::uint32_t own_bits) const {
+  for (const TrajectoryPart& part : parts) {
+    const std::uint32_t bits = part.bits == TransitionPart::own_state ? own_bits : part.bits;
+    for (std::uint32_t bit = part.base; bit < part.base + bits; ++bit)
+      mask[bit / 64] |= Word{1} << (bit % 64);
+    for (const Slot& flag : part.frozen_by)
+      set_bits(mask, flag.offset, flag.width);
   }
 }
 

@@ -125,6 +125,9 @@ struct TransitionPart {
   std::vector<std::shared_ptr<const ActionSignature>> boxes;
   bool input = false;    // its own action is an input: it may not refuse an occurrence
   std::string component; // the component it belongs to (errors), empty at the top
+  // Its author's word that the part commutes with a tick of its automaton's time
+  // (TransitionBuilder::commutes_with_time).
+  bool commutes_with_time = false;
 
   bool frozen(const State& s) const { return any_set(frozen_by, s); }
   bool receives(const Params& p) const {
@@ -181,6 +184,20 @@ struct Transition {
     else if (owner.effect)
       owner.effect(local, p);
   }
+  // Whether every part that takes part in some occurrence declares that it commutes with
+  // a tick (TransitionBuilder::commutes_with_time); the environment's idle part of an
+  // input counts as declaring it. False for a transition with no part.
+  bool commutes_with_time() const {
+    bool any = false;
+    for (const TransitionPart& part : parts) {
+      if (part.idle())
+        continue;
+      if (!part.commutes_with_time)
+        return false;
+      any = true;
+    }
+    return any;
+  }
   // Adds to `f` what the step may read and write; `own_bits`: the state size of the
   // automaton that runs it (the footprint of a part that declares none, at the top).
   void add_footprint(const Params& p, Footprint& f, std::uint32_t own_bits) const;
@@ -201,6 +218,9 @@ struct TrajectoryPart {
   StatePredicate stop_when; // time cannot pass while this holds (empty: never)
   std::uint32_t base = 0;
   std::vector<Slot> frozen_by; // as TransitionPart: a failed part lets time pass, unchanged
+  // The width of its automaton's state, from `base` (TransitionPart::own_state: the
+  // automaton's whole state, at the top): all that its evolve and stop_when may touch.
+  std::uint32_t bits = TransitionPart::own_state;
 };
 
 // Trajectories over discretised time: one tick is one quantum. Time passes when no part
@@ -226,8 +246,11 @@ struct Trajectories {
       return parts.front().stop_when && parts.front().stop_when(s);
     return stops_parts(s);
   }
-  // Places them where a component's state begins (compose).
-  void place(std::uint32_t base);
+  // Places them where a component's state begins (compose), `bits` wide.
+  void place(std::uint32_t base, std::uint32_t bits);
+  // Sets in `mask` every bit time may read or change: each part's automaton's state and
+  // the flags that freeze it; `own_bits`: the state size at the top.
+  void footprint(Word* mask, std::uint32_t own_bits) const;
 
 private:
   void evolve_parts(State& s) const;

@@ -56,12 +56,12 @@ tioa::Automaton vbcast(const VlConfig& c) {
           .reads(j_value[i])
           .reads(j_from[i])
           .reads(j_to[i])
-          .writes(j_kind[i])
-          .writes(j_id[i])
-          .writes(j_value[i])
-          .writes(j_from[i])
+          .sets(j_kind[i], junk::empty) // a delivery only empties a slot (clear_junk)
+          .sets(j_id[i], 0)
+          .sets(j_value[i], 0)
+          .sets(j_from[i], 0)
           .writes(j_to[i])
-          .writes(j_age[i]);
+          .sets(j_age[i], 0);
   };
 
   for (int p = 0; p < n; ++p) {
@@ -221,7 +221,12 @@ tioa::Automaton vbcast(const VlConfig& c) {
               f.reads(vn_mask[x[0]]).reads(vn_count[x[0]]);
               f.writes(vn_mask[x[0]]).sets(vn_age[x[0]], 0);
               junk_footprint(f);
-            }),
+            })
+            // A delivery only clears a pending bit (and zeroes the age of a slot it
+            // empties), and a slot's age advances only while it is pending: delivering
+            // then ticking and ticking then delivering give the same state, the delivery
+            // stays possible (its bit stays set) and clearing a bit never stops time.
+            .commutes_with_time(),
         [=](const State& s, const Params& x) {
           const auto& from = lattice.nbrs(x[0]);
           const auto at = std::find(from.begin(), from.end(), v);

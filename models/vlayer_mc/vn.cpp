@@ -87,7 +87,8 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
         const auto at = std::find(nbrs.begin(), nbrs.end(), m[0]);
         if (at != nbrs.end())
           f.sets(V.items[static_cast<std::size_t>(at - nbrs.begin())], m[1]);
-      });
+      })
+      .commutes_with_time(); // V_u is not read by time: the clock and `since` are
   a.output(names::vcast_vn_update(u), {{"n", 0, n}})
       .pre([=](const State& s, const Params& m) {
         return at_phase(s, vn_phase) && m[0] == reported(s);
