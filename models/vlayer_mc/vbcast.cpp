@@ -200,7 +200,8 @@ tioa::Automaton vbcast(const VlConfig& c) {
               f.reads(cn_pending[x[0]]).reads(cn_loc[x[0]]);
               f.sets(cn_pending[x[0]], false).sets(cn_age[x[0]], 0);
               junk_footprint(f);
-            }),
+            })
+            .commutes_with_time(), // as the vn-update deliveries below
         [=](const State& s, const Params& x) {
           return s[cn_pending[x[0]]] && s[cn_loc[x[0]]] == x[1] && lattice.region_of(x[1]) == v;
         },

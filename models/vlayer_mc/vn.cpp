@@ -70,13 +70,19 @@ tioa::Automaton vn(const VlConfig& c, RegionId u) {
             f.sets_bottom(reports);
         }
       });
-  a.input(names::vrcv_cn_update(u), {{"p", 0, n - 1}, {"l", 0, points - 1}})
-      .eff([=](State& s, const Params& m) {
-        // D16: no clock, no round.
-        if (!s.is_bottom(clock) && collecting(s[clock]) && lattice.region_of(m[1]) == u)
-          s[M[m[0]]] = m[1];
-      })
-      .footprint([=](const Params& m, tioa::Footprint& f) { f.reads(clock).sets(M[m[0]], m[1]); });
+  tioa::TransitionBuilder cn_update =
+      a.input(names::vrcv_cn_update(u), {{"p", 0, n - 1}, {"l", 0, points - 1}})
+          .eff([=](State& s, const Params& m) {
+            // D16: no clock, no round.
+            if (!s.is_bottom(clock) && collecting(s[clock]) && lattice.region_of(m[1]) == u)
+              s[M[m[0]]] = m[1];
+          })
+          .footprint(
+              [=](const Params& m, tioa::Footprint& f) { f.reads(clock).sets(M[m[0]], m[1]); });
+  // Time does not read M_u, and a tick keeps a clock (or its ⊥): the paper's VN takes a
+  // report the same way a quantum later. D26 reads the phase, which a tick changes.
+  if (!repair)
+    cn_update.commutes_with_time();
   a.input(names::vrcv_vn_update(u), {{"g", 0, regions - 1}, {"n", 0, n}})
       .eff([=](State& s, const Params& m) {
         const auto at = std::find(nbrs.begin(), nbrs.end(), m[0]);
