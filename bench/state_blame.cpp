@@ -1,14 +1,15 @@
 // Which variables make a model's states many: explores a built-in model from its start
-// states (breadth first, up to a number of states, with or without the reduction of
-// zero-time steps) and, for each variable and each group of variables (an array: the names
-// before '['; a component: before the first '.', shown as "VN_4.*"; a kind across
-// components and arrays: the name with its numbers as '#', "VN_#.V[#]"), counts the distinct states
-// left when that variable is left out. A variable whose removal leaves few states is what the
-// search spends its states on; a variable whose removal changes nothing does not matter to the
-// count. With --time-passing only the states where time can pass are counted (the ones the
-// reduction expands in full).
+// states (breadth first, up to a number of states, with the reduction the time-lock check
+// uses, with only its part where time cannot pass, or with none) and, for each variable and each
+// group of variables (an array: the names before '['; a component: before the first '.', shown as
+// "VN_4.*"; a kind across components and arrays: the name with its numbers as '#', "VN_#.V[#]"),
+// counts the distinct states left when that variable is left out. A variable whose removal leaves
+// few states is what the search spends its states on; a variable whose removal changes nothing does
+// not matter to the count. With --time-passing only the states where time can pass are counted.
+// --por on is the reduction of the invariant and time-lock checks (states where time can pass
+// reduced too); zero-time reduces only where time cannot pass (as every check did before 66de532).
 //
-// Run: build/bench/state_blame MODEL [-p NAME=VALUE ...] [--states N] [--por on|off]
+// Run: build/bench/state_blame MODEL [-p NAME=VALUE ...] [--states N] [--por on|zero-time|off]
 //      [--time-passing] [--threads N]
 // e.g. build/bench/state_blame vlayer-mc -p rows=3,cols=3 --states 1000000 --time-passing
 //
@@ -44,14 +45,15 @@ struct Options {
   std::vector<std::string> settings;
   std::uint64_t states = 1'000'000;
   bool por = true;
-  bool time_passing = false;
+  bool time_passing_reduced = true; // --por on: states where time can pass reduced too
+  bool time_passing = false;        // count only the states where time can pass
   unsigned threads = 2;
 };
 
 [[noreturn]] void usage(const char* why) {
   std::fprintf(stderr,
                "state_blame: %s\nusage: state_blame MODEL [-p NAME=VALUE ...] [--states N] "
-               "[--por on|off] [--time-passing] [--threads N]\n",
+               "[--por on|zero-time|off] [--time-passing] [--threads N]\n",
                why);
   std::exit(2);
 }
@@ -67,9 +69,10 @@ Options parse(int argc, char** argv) {
       o.states = std::strtoull(argv[++i], nullptr, 10);
     else if (a == "--por" && has_value) {
       const std::string value = argv[++i];
-      if (value != "on" && value != "off")
-        usage("--por takes on or off");
-      o.por = value == "on";
+      if (value != "on" && value != "zero-time" && value != "off")
+        usage("--por takes on, zero-time or off");
+      o.por = value != "off";
+      o.time_passing_reduced = value == "on";
     } else if (a == "--threads" && has_value)
       o.threads = static_cast<unsigned>(std::strtoul(argv[++i], nullptr, 10));
     else if (a == "--time-passing")
@@ -114,7 +117,7 @@ int main(int argc, char** argv) {
         catalogue::resolve_params(definition, catalogue::split_settings(o.settings)));
     const tioa::Automaton& system = instance.system;
     const tioa::SuccessorGenerator generator(system);
-    const checker::ZeroTimeReduction reduction(generator, {});
+    const checker::ZeroTimeReduction reduction(generator, {}, o.time_passing_reduced);
     checker::ExploreOptions options;
     options.limits.max_states = o.states;
     options.threads = o.threads;
@@ -133,7 +136,10 @@ int main(int argc, char** argv) {
     }
     std::printf("%s: %llu states explored (%s), depth %u, %s; %zu states counted%s\n",
                 o.model.c_str(), static_cast<unsigned long long>(ex.store.size()),
-                o.por ? "zero-time steps reduced" : "every step", ex.depth,
+                !o.por                   ? "every step"
+                : o.time_passing_reduced ? "reduced, where time passes too"
+                                         : "zero-time steps reduced",
+                ex.depth,
                 ex.stop == checker::StopReason::finished ? "every reachable state"
                                                          : "cut at the state limit",
                 counted.size(), o.time_passing ? " (those where time can pass)" : "");
