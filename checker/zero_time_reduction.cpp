@@ -206,6 +206,46 @@ bool ZeroTimeReduction::freeze(const Word* bits, Scratch& s) const {
   return true;
 }
 
+void ZeroTimeReduction::relate_steps(std::uint32_t b, const Word* state, const Word* untouched,
+                                     const Word* changed, Scratch& s) const {
+  const tioa::Automaton& automaton = generator_->automaton();
+  const auto& fields = table_.fields();
+  Word* reads = s.footprint_masks.data();
+  Word* writes = reads + words_;
+  Word* plain = writes + words_;
+  const std::uint32_t first = table_.first_point(b), last = first + table_.point_count(b);
+  bool any = false;
+  for (std::uint32_t i = first; i < last; ++i) {
+    if (s.covered[i] || s.joining[i] || !table_.accepted(i))
+      continue;
+    const Word* may_write = table_.point_writes(i);
+    bool joins = intersects(may_write, changed, words_);
+    if (!joins && !intersects(may_write, untouched, words_))
+      continue; // touches none of it
+    if (!joins) {
+      std::fill(reads, reads + 3 * std::size_t{words_}, 0);
+      s.declared.sets.clear();
+      s.declared.plain = plain;
+      tioa::Footprint f(reads, writes, 0, &s.declared);
+      automaton.footprint(b, table_.params(i), f);
+      joins = intersects(plain, untouched, words_) ||
+              std::any_of(s.declared.sets.begin(), s.declared.sets.end(), [&](const auto& set) {
+                const StepTable::Field& field = fields[table_.field_of_bit(set.offset)];
+                return overlaps(untouched, field.offset, field.width) &&
+                       field_code(state, field.offset, field.width) != set.code;
+              });
+    }
+    if (joins) {
+      s.joining[i] = 1;
+      any = true;
+    }
+  }
+  if (any && !s.queued[b]) {
+    s.queued[b] = 1;
+    s.work.push_back(b);
+  }
+}
+
 bool ZeroTimeReduction::writes_only_current(std::uint32_t action, const Word* state,
                                             const Word* mask, Scratch& s) const {
   const StepTable::Values& v = writer_values(action, state, s);
@@ -399,7 +439,7 @@ void ZeroTimeReduction::process(std::uint32_t a, const Word* state, Scratch& s) 
     for (std::uint32_t i = first; i < last; ++i) {
       if (s.covered[i] || !table_.accepted(i))
         continue;
-      if (!intersects(table_.point_reads(i), read_mask, words_) &&
+      if (!s.joining[i] && !intersects(table_.point_reads(i), read_mask, words_) &&
           !intersects(table_.point_writes(i), write_mask, words_))
         continue;
       s.covered[i] = 1;
@@ -495,6 +535,8 @@ void ZeroTimeReduction::run_and_relate(const Word* state, std::uint32_t k, Scrat
   for_each_action(actions, action_words_, [&](std::uint32_t b) {
     if (writes_only_current(b, state, untouched, s))
       relate(b, nullptr, changed, s);
+    else if (table_.small(b))
+      relate_steps(b, state, untouched, changed, s);
     else
       relate(b, nullptr, all, s);
   });
@@ -669,6 +711,7 @@ std::optional<std::size_t> ZeroTimeReduction::reduce(const Word* state, Scratch&
   }
 
   s.covered.assign(table_.points(), 0);
+  s.joining.assign(table_.points(), 0);
   s.whole.assign(actions, 0);
   s.done.assign(actions, 0);
   s.queued.assign(actions, 0);

@@ -18,7 +18,10 @@
 //  - for a step in the set that is enabled here, every step that may read what it
 //    changed, or write what it wrote or read (what its guard and effect read and wrote
 //    when they ran in this state), except steps that can only write there the values
-//    those variables already hold;
+//    those variables already hold (decided for the whole action, its steps in this
+//    instant; else, for an action with a small box, step by step from the values each
+//    step declares, which its parameters fix: a delivery of a count of 0 to a VN whose V
+//    holds 0 stays out while the delivery of a count of 1 to it joins);
 //  - at least one enabled step that has a successor (a step with no choice has none).
 // "The steps that may change what a predicate read" are first the steps that may write
 // those bits. Within one instant some of them cannot change the predicate's value: a
@@ -129,6 +132,7 @@ public:
     std::vector<std::uint32_t> first_enabled; // per action: its first step in `enabled`
     std::vector<std::uint32_t> step_of_point; // per point: its index in `enabled`, or none
     std::vector<std::uint8_t> covered;        // per point: in the set already
+    std::vector<std::uint8_t> joining;        // per point: to join (relate_steps)
     std::vector<std::uint8_t> whole;          // per action with a large box: every step in the set
     std::vector<std::uint8_t> done;           // per action with a large box: its steps handled
     std::vector<std::uint8_t> ran;            // per step of `enabled`: run
@@ -221,6 +225,13 @@ private:
   // Puts in the set every step that may write `bits` (none is enabled here: else false, and
   // nothing joins), so that along every path outside the set they keep their values.
   bool freeze(const Word* bits, Scratch& s) const;
+  // For a writer `b` (a small box) that may write other values than they hold on the
+  // fields of `untouched` (what the step just run read or wrote and left unchanged):
+  // puts in the set those of its steps, one by one, that may write `changed` or write there
+  // a value other than they hold, leaving out the others (their declared values are
+  // fixed by their parameters).
+  void relate_steps(std::uint32_t b, const Word* state, const Word* untouched, const Word* changed,
+                    Scratch& s) const;
   // Whether `action` can only write, on the fields of `mask`, the values they hold.
   bool writes_only_current(std::uint32_t action, const Word* state, const Word* mask,
                            Scratch& s) const;
