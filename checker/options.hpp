@@ -82,6 +82,11 @@ struct ExploreOptions {
   // Partial-order reduction of zero-time steps (zero_time_reduction.hpp) in the checks
   // where it is sound (invariants, deadlocks and time-locks of timed systems).
   bool por = false;
+  // With `por`, the stabilisation check of a timed system too (`--por all`;
+  // checker/stabilisation.cpp): the same verdicts and worst times on fewer states, but the
+  // sets cost more there (the legal set is visible and reads most of a state), so it pays
+  // only where the reduction is large (measured in bench/README.md).
+  bool por_stabilisation = false;
   StoreKind store = StoreKind::exact;
   bool progress = false; // a progress line on stderr (only when it is a terminal)
   // At the state limit a run finishes its last level for the edge counts and, with several

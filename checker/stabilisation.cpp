@@ -14,6 +14,33 @@
 // worst_time = W + 1 where W = max last(S) over start states: the least t (a whole
 // number of units) such that every state at time >= t is in L. In steps (untimed
 // models) this is the largest number of steps before an execution is in L for good.
+//
+// With `--por all`, in a timed model without a `settled` set, states where time cannot
+// pass are expanded by the zero-time reduction (zero_time_reduction.hpp) with L as its
+// predicate; states where time can pass are expanded in full. The reduced graph R is part
+// of the full one, so a lasso, an unbounded cycle or a time-lock found in R is one of the
+// full graph (and its trace real), and R's worst time is at most the full one. It is also
+// at least the full one. Take a path of the full graph with k ticks to a state x outside
+// L; cut it at its ticks, each taken at a state where time can pass.
+//  (1) From a state s of R, every state z where time can pass that a zero-time path
+//      reaches is reached in R by a zero-time path: at a reduced s the path holds a step
+//      of the set (the set holds the tick's necessary enabling set); the first one moves
+//      to the front, and the path from its successor is one step shorter. So R reaches
+//      the state where the path's last tick is taken, after k - 1 ticks, and the tick.
+//  (2) From there the path reaches x in zero time. If L holds there, a step of the set
+//      changes L on it (the set holds the steps that may change what L read), so by the
+//      same induction R reaches some state outside L in the same instant.
+// So R reaches a state outside L after k ticks, and when the full graph has no bound R
+// has none either (a finite graph with paths of every length has a timed cycle). What the
+// argument does not give is the time-locks of the full graph: a step left out may be the
+// only way into one. If R has no zero-time cycle, it does: by (1) a time-locked x is
+// reached, up to the steps of the set that a path avoiding it leaves enabled (each keeps
+// x time-locked, and without a zero-time cycle in R they cannot go on forever), so R
+// holds a time-locked state. Hence: when R's answer would be "holds" and R has a
+// zero-time cycle or a state in L from which time never passes again, the check is run
+// again without the reduction (a note says so); otherwise R's verdict and worst time are
+// the full graph's. Counts, and the notes that count edges, are R's; a zero-time cycle of
+// the full graph outside L (a Zeno execution, only noted) may be missing from R.
 
 #include <algorithm>
 #include <limits>
@@ -218,6 +245,32 @@ Components strongly_connected(const Graph& g, std::size_t n, Meter& meter) {
   return c;
 }
 
+// Whether the graph's zero-time edges form no cycle (Kahn's algorithm: repeatedly take
+// away a state that no zero-time edge of the states left enters).
+bool zero_time_acyclic(const Graph& g, std::size_t n, Meter& meter) {
+  meter.take(n * sizeof(std::uint32_t));
+  std::vector<std::uint32_t> entering(n, 0);
+  for (const std::uint32_t t : g.targets)
+    if (!(t & Edge::timed_bit))
+      ++entering[t];
+  std::vector<StateId> free;
+  for (StateId v = 0; v < n; ++v)
+    if (entering[v] == 0)
+      meter.push(free, v);
+  std::size_t removed = 0;
+  while (!free.empty()) {
+    const StateId v = free.back();
+    free.pop_back();
+    ++removed;
+    for (auto [it, end] = g.out(v); it != end; ++it)
+      if (!(*it & Edge::timed_bit) && --entering[*it] == 0)
+        meter.push(free, *it);
+  }
+  meter.release(entering);
+  meter.release(free);
+  return removed == n;
+}
+
 // A path inside a component: each state after the first with the duration of the edge
 // that reaches it (a tick and an action may join the same two states).
 using Path = std::vector<std::pair<StateId, std::uint32_t>>;
@@ -353,26 +406,21 @@ void check_progress_measure(const Automaton& system, const Exploration& ex, cons
   }
 }
 
-} // namespace
-
-PropertyResult check_stabilisation(const Automaton& system, const StatePredicate& legal,
-                                   const ExploreOptions& options) {
-  return check_stabilisation(system, legal, {}, options);
-}
-
-PropertyResult check_stabilisation(const Automaton& system, const StatePredicate& legal,
-                                   const StatePredicate& settled, const ExploreOptions& options) {
-  if (!settled)
-    if (std::optional<PropertyResult> r =
-            check_stabilisation_without_cycles(system, legal, options))
-      return std::move(*r);
-  require_stored_states(options, "the stabilisation check");
-  const tioa::SuccessorGenerator gen(system);
+// The check on the graph explored with `reduction` (null: the full graph); nullopt when
+// the reduced graph's "holds" is not proven to be the full graph's (the header), with the
+// reason in `redo`.
+std::optional<PropertyResult> stabilisation(const Automaton& system,
+                                            const tioa::SuccessorGenerator& gen,
+                                            const StatePredicate& legal,
+                                            const StatePredicate& settled,
+                                            const ExploreOptions& options,
+                                            const ZeroTimeReduction* reduction, std::string& redo) {
   ExploreHooks hooks;
   hooks.record_edges = true;
   if (settled)
     hooks.expand = [&](const tioa::Word* s) { return !settled(tioa::State(s, 0)); };
-  Exploration ex = explore(gen, system.start(), options, hooks);
+  Exploration ex = explore(gen, system.start(), options, hooks, reduction);
+  const bool reduced = ex.reduced_states > 0;
 
   PropertyResult r = result_of("stabilisation", ex, gen);
   if (!ex.complete()) {
@@ -418,8 +466,9 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
       escapes += (g.legal[v] && !g.legal[*t & ~Edge::timed_bit]) ? 1 : 0;
   }
   if (escapes > 0)
-    r.notes.push_back("L is not closed: " + std::to_string(escapes) +
-                      " reachable steps leave it; times count to the last state outside L");
+    r.notes.push_back("L is not closed: " + std::to_string(escapes) + " reachable steps" +
+                      (reduced ? " of the reduced graph" : "") +
+                      " leave it; times count to the last state outside L");
   if (c.zeno > 0)
     r.notes.push_back(std::to_string(c.zeno) +
                       " zero-time cycles outside L: Zeno executions, in which time never "
@@ -447,6 +496,25 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
     return r;
   }
 
+  if (reduced) {
+    bool acyclic = false;
+    try {
+      acyclic = zero_time_acyclic(g, ex.store.size(), meter);
+    } catch (const OverMemoryLimit&) {
+    }
+    if (c.legal_locks > 0 || !acyclic) {
+      redo = std::string("the graph reduced by --por all had ") +
+             (c.legal_locks > 0 ? "states in L from which time never passes again"
+                                : "a cycle of zero-time steps (or its check did not fit)") +
+             ", where its worst time is not proven to be the full graph's: checked without "
+             "the reduction";
+      return std::nullopt;
+    }
+    r.notes.push_back("--por all: " + std::to_string(ex.reduced_states) +
+                      " states where time cannot pass were expanded in part; every state where "
+                      "time can pass is kept, so the worst time is the full graph's "
+                      "(checker/stabilisation.cpp)");
+  }
   std::optional<StateId> worst_root;
   for (StateId s = 0; s < ex.start_states; ++s)
     if (c.last[c.of[s]] != Components::never &&
@@ -467,6 +535,39 @@ PropertyResult check_stabilisation(const Automaton& system, const StatePredicate
   r.message = "every execution is in L from time " + std::to_string(w + 1) + " " + r.time_unit +
               " on (an execution can still be outside L at time " + std::to_string(w) + ")";
   return r;
+}
+
+} // namespace
+
+PropertyResult check_stabilisation(const Automaton& system, const StatePredicate& legal,
+                                   const StatePredicate& settled, const ExploreOptions& options) {
+  if (!settled)
+    if (std::optional<PropertyResult> r =
+            check_stabilisation_without_cycles(system, legal, options))
+      return std::move(*r);
+  require_stored_states(options, "the stabilisation check");
+  const tioa::SuccessorGenerator gen(system);
+  // The reduction only where the header's argument holds: a timed model (its worst time
+  // counts ticks, which the reduction never reorders) and no settled states (a state
+  // becoming settled is not a change the reduction sees).
+  std::optional<ZeroTimeReduction> reduction;
+  if (options.por && options.por_stabilisation && gen.timed() && !settled) {
+    reduction.emplace(gen, legal);
+    if (!reduction->can_reduce())
+      reduction.reset();
+  }
+  std::string redo;
+  if (std::optional<PropertyResult> r = stabilisation(system, gen, legal, settled, options,
+                                                      reduction ? &*reduction : nullptr, redo))
+    return std::move(*r);
+  PropertyResult r = *stabilisation(system, gen, legal, settled, options, nullptr, redo);
+  r.notes.push_back(redo);
+  return r;
+}
+
+PropertyResult check_stabilisation(const Automaton& system, const StatePredicate& legal,
+                                   const ExploreOptions& options) {
+  return check_stabilisation(system, legal, {}, options);
 }
 
 } // namespace checker

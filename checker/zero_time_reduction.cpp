@@ -490,15 +490,43 @@ void ZeroTimeReduction::enable_task(const Scratch::Task& task, const Word* state
   Word* reads = s.masks.data() + 3 * std::size_t{words_};
   std::fill(reads, reads + words_, 0);
   const tioa::State traced(state, 0, reads, words_);
-  for (const std::uint32_t* i = first; i != last; ++i)
-    (void)step_enabled(a, table_.params(*i), traced);
+  std::sort(s.task_points.begin() + task.begin, s.task_points.begin() + task.end);
+  (void)any_step_enabled(a, first, last, traced, s);
   add_enablers(
-      state, reads,
-      [&](const tioa::State& t) {
-        return std::none_of(first, last,
-                            [&](std::uint32_t i) { return step_enabled(a, table_.params(i), t); });
-      },
+      state, reads, [&](const tioa::State& t) { return !any_step_enabled(a, first, last, t, s); },
       s);
+}
+
+bool ZeroTimeReduction::any_step_enabled(std::uint32_t action, const std::uint32_t* first,
+                                         const std::uint32_t* last, const tioa::State& state,
+                                         Scratch& s) const {
+  const tioa::Transition& t = generator_->automaton().transitions()[action];
+  // A binder reads the state and the parameters before its own (tioa/transition.hpp), so
+  // steps that agree on those share its value: it is asked once per such prefix, which
+  // reads exactly what asking it for every step reads. Sorted steps share prefixes.
+  s.binder_memo.assign(t.bindings.size(), {});
+  for (const std::uint32_t* i = first; i != last; ++i) {
+    const tioa::Params& p = table_.params(*i);
+    bool allowed = true;
+    for (std::size_t k = 0; k < t.bindings.size() && allowed; ++k) {
+      const tioa::Binding& binding = t.bindings[k];
+      if (binding.filter()) {
+        allowed = binding.allows(state, p);
+        continue;
+      }
+      Scratch::BinderMemo& memo = s.binder_memo[k];
+      if (!memo.valid || !std::equal(p.values.begin(), p.values.begin() + binding.param,
+                                     memo.prefix.values.begin())) {
+        memo.valid = true;
+        memo.prefix = p;
+        memo.value = binding.bind(state, p);
+      }
+      allowed = memo.value && *memo.value == p[binding.param];
+    }
+    if (allowed && t.enabled(state, p))
+      return true;
+  }
+  return false;
 }
 
 void ZeroTimeReduction::run_and_relate(const Word* state, std::uint32_t k, Scratch& s) const {

@@ -172,7 +172,14 @@ public:
     std::vector<Word> frozen;          // bits a writer's binders read that steps change
     std::vector<Word> commute;         // four states: a step's word checked (check_commutes)
     std::vector<Word> freezers;        // bit set of the actions that may write them
-    std::uint64_t reduced = 0;         // states where fewer steps than enabled were taken
+    // Per binding of one action: the parameters before its own last asked, and its value.
+    struct BinderMemo {
+      bool valid = false;
+      tioa::Params prefix;
+      std::optional<std::int32_t> value;
+    };
+    std::vector<BinderMemo> binder_memo;
+    std::uint64_t reduced = 0; // states where fewer steps than enabled were taken
   };
 
   // Fills scratch.successors and scratch.durations with the successors to explore from
@@ -243,6 +250,9 @@ private:
   void drop_ignored(Word* mask) const;
   // The name of the variable that holds the first bit of `bits`.
   std::string first_variable(const Word* bits) const;
+  // Whether one of the steps [first, last) (points) of `action` is enabled in `state`.
+  bool any_step_enabled(std::uint32_t action, const std::uint32_t* first, const std::uint32_t* last,
+                        const tioa::State& state, Scratch& s) const;
   // Whether step `params` of `action` is enabled in `state` (binders included).
   bool step_enabled(std::uint32_t action, const tioa::Params& params,
                     const tioa::State& state) const;

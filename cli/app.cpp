@@ -162,11 +162,17 @@ void add_run_options(CLI::App* command, RunSettings& settings, Limits& limits, s
       ->check(CLI::Range(1u, 4096u));
   command
       ->add_option_function<std::string>(
-          "--por", [&settings](const std::string& value) { settings.por = value == "on"; },
-          "partial-order reduction of zero-time steps where it is sound (invariants, deadlocks "
-          "and time-locks of timed models): on or off (default: on)")
-      ->type_name("on|off")
-      ->check(CLI::IsMember({"on", "off"}));
+          "--por",
+          [&settings](const std::string& value) {
+            settings.por = value != "off";
+            settings.por_stabilisation = value == "all";
+          },
+          "partial-order reduction of zero-time steps where it is sound: on (invariants, "
+          "deadlocks and time-locks of timed models), all (also the stabilisation checks of "
+          "timed models: the same worst times, fewer states, often more time), or off "
+          "(default: on)")
+      ->type_name("on|all|off")
+      ->check(CLI::IsMember({"on", "all", "off"}));
   command->add_option("--max-states", limits.max_states, "stop after N states (0: no limit)")
       ->type_name("N")
       ->check(whole_number());

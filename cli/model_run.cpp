@@ -43,6 +43,7 @@ checker::ExploreOptions explore_options(const RunSettings& settings) {
   options.limits = settings.limits;
   options.threads = settings.threads;
   options.por = settings.por;
+  options.por_stabilisation = settings.por_stabilisation;
   options.store = settings.store;
   options.progress = true; // drawn only on a terminal, and only for runs longer than 1 s
   return options;

@@ -15,7 +15,8 @@ enum class TraceMode { text, json, none };
 
 struct RunSettings {
   unsigned threads = 1;
-  bool por = true;                                      // --por on|off
+  bool por = true;                                      // --por on|off (or all)
+  bool por_stabilisation = false;                       // --por all
   checker::StoreKind store = checker::StoreKind::exact; // --store (check, explore)
   checker::Limits limits;
   bool json = false;

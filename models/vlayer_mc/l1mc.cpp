@@ -29,89 +29,127 @@ struct VsaSlots {
   std::vector<tioa::Slot> M;
 };
 
-} // namespace
+// Walks the clauses (2)–(4c) on a state, calling `broken(clause, node)` for each clause a
+// node breaks (clause "(2)", node VN_1); stops at the first call that
+// returns false.
+// The predicate stops at the first broken clause (so it reads no more than it needs,
+// which keeps the zero-time reduction's dependencies on it small); the clause list does
+// not.
+struct BrokenNode {
+  bool vn; // else a CN
+  int index;
+};
 
-ClauseCheck l1mc_clauses(const VlConfig& c, const tioa::Automaton& layer, MWindow window) {
-  const Lattice lattice = c.lattice();
-  std::vector<ClientSlots> clients;
-  for (int p = 0; p < c.robots; ++p) {
-    const std::string cn = names::cn_name(p) + ".", id = "[" + std::to_string(p) + "]";
-    clients.push_back(
-        {find_slot(layer, cn + "failed"), need_slot(layer, cn + "cn.clock", "L1MC"),
-         need_slot(layer, cn + "cn.x", "L1MC"), need_slot(layer, cn + "cn.target", "L1MC"),
-         need_slot(layer, cn + "cn.v", "L1MC"), need_slot(layer, "RW.vel" + id, "L1MC"),
-         need_slot(layer, "RW.loc" + id, "L1MC"), need_slot(layer, "VBcast.reg" + id, "L1MC")});
+class L1mcWalk {
+public:
+  L1mcWalk(const VlConfig& c, const tioa::Automaton& layer, MWindow window)
+      : lattice_(c.lattice()), now_(need_slot(layer, "RW.now", "L1MC")), delta_(c.delta),
+        target_phase_(c.target_phase()),
+        window_end_(c.delta - c.d_r + c.eps_sample), // (4c), exclusive, may pass δ
+        vmax_(c.vmax), d_r_(c.d_r), first_phase_(window == MWindow::closed ? 0 : 1) {
+    for (int p = 0; p < c.robots; ++p) {
+      const std::string cn = names::cn_name(p) + ".", id = "[" + std::to_string(p) + "]";
+      clients_.push_back(
+          {find_slot(layer, cn + "failed"), need_slot(layer, cn + "cn.clock", "L1MC"),
+           need_slot(layer, cn + "cn.x", "L1MC"), need_slot(layer, cn + "cn.target", "L1MC"),
+           need_slot(layer, cn + "cn.v", "L1MC"), need_slot(layer, "RW.vel" + id, "L1MC"),
+           need_slot(layer, "RW.loc" + id, "L1MC"), need_slot(layer, "VBcast.reg" + id, "L1MC")});
+    }
+    for (int u = 0; u < lattice_.regions(); ++u) {
+      const std::string vn = names::vn_name(u) + ".";
+      VsaSlots slots{find_slot(layer, vn + "failed"), need_slot(layer, vn + "clock", "L1MC"), {}};
+      for (int p = 0; p < c.robots; ++p)
+        slots.M.push_back(need_slot(layer, vn + "M[" + std::to_string(p) + "]", "L1MC"));
+      vsas_.push_back(slots);
+    }
   }
-  std::vector<VsaSlots> vsas;
-  for (int u = 0; u < lattice.regions(); ++u) {
-    const std::string vn = names::vn_name(u) + ".";
-    VsaSlots slots{find_slot(layer, vn + "failed"), need_slot(layer, vn + "clock", "L1MC"), {}};
-    for (int p = 0; p < c.robots; ++p)
-      slots.M.push_back(need_slot(layer, vn + "M[" + std::to_string(p) + "]", "L1MC"));
-    vsas.push_back(slots);
-  }
-  const tioa::Slot now = need_slot(layer, "RW.now", "L1MC");
-  const int delta = c.delta, target_phase = c.target_phase();
-  const int window_end = c.delta - c.d_r + c.eps_sample; // (4c), exclusive, may pass δ
-  const int vmax = c.vmax, d_r = c.d_r;
-  const int first_phase = window == MWindow::closed ? 0 : 1;
 
-  return [=](const tioa::State& s) {
-    std::vector<std::string> broken;
-    const int time = *read(s, now);
-    for (std::size_t u = 0; u < vsas.size(); ++u) {
-      const VsaSlots& vn = vsas[u];
+  template <class Broken> void operator()(const tioa::State& s, Broken&& broken) const {
+    const int time = *read(s, now_);
+    for (std::size_t u = 0; u < vsas_.size(); ++u) {
+      const VsaSlots& vn = vsas_[u];
       if (vn.failed && s.code(*vn.failed) != 0)
         continue;
       const auto clock = read(s, vn.clock);
-      bool heard = false;
-      for (const auto& m : vn.M)
-        heard |= read(s, m).has_value();
       const bool clock_ok = !clock || *clock == time;
-      const bool m_ok = !heard || (clock && *clock >= first_phase && *clock <= target_phase);
-      if (!clock_ok || !m_ok)
-        broken.push_back("(2) " + names::vn_name(static_cast<int>(u)));
+      bool heard = false;
+      for (std::size_t m = 0; m < vn.M.size() && !heard; ++m)
+        heard = read(s, vn.M[m]).has_value();
+      const bool m_ok = !heard || (clock && *clock >= first_phase_ && *clock <= target_phase_);
+      if ((!clock_ok || !m_ok) && !broken("(2)", BrokenNode{true, static_cast<int>(u)}))
+        return;
     }
-    for (std::size_t p = 0; p < clients.size(); ++p) {
-      const ClientSlots& cn = clients[p];
-      const std::string who = " " + names::cn_name(static_cast<int>(p));
+    for (std::size_t p = 0; p < clients_.size(); ++p) {
+      const ClientSlots& cn = clients_[p];
+      const BrokenNode who{false, static_cast<int>(p)};
       if (cn.failed && s.code(*cn.failed) != 0)
         continue;
       // (3) compares velocity vectors (D4, D27): "steer to q" is the vector of this quantum's
       // step from RW.loc(p), so steering to the point one stands on is the zero vector, and so
       // is RW.vel(p) = ⊥ (our RW moves a robot only towards a point, D8).
-      const auto v = read(s, cn.v), vel = read(s, cn.vel);
-      const Point at = static_cast<Point>(*read(s, cn.loc));
-      const auto step = [&](std::optional<int> steer) {
-        return !steer || *steer == zero_velocity ? at : lattice.step_toward(at, *steer, vmax);
-      };
-      if (v && step(v) != step(vel))
-        broken.push_back("(3)" + who);
+      const auto v = read(s, cn.v);
+      if (v) {
+        const auto vel = read(s, cn.vel);
+        const Point at = static_cast<Point>(*read(s, cn.loc));
+        const auto step = [&](std::optional<int> steer) {
+          return !steer || *steer == zero_velocity ? at : lattice_.step_toward(at, *steer, vmax_);
+        };
+        if (step(v) != step(vel) && !broken("(3)", who))
+          return;
+      }
       const auto x = read(s, cn.x);
       if (!x)
         continue;
       const auto clock = read(s, cn.clock);
-      if (*x != *read(s, cn.loc) || clock != time)
-        broken.push_back("(4a)" + who);
+      if ((*x != *read(s, cn.loc) || clock != time) && !broken("(4a)", who))
+        return;
       const auto target = read(s, cn.target);
       if (target && *target != *x) {
-        const int left = !clock || *clock == 0 ? 0 : delta - *clock; // δ⌈c/δ⌉ − c
-        if (!(lattice.distance(*target, *x) < vmax * (left - d_r)))
-          broken.push_back("(4b)" + who);
+        const int left = !clock || *clock == 0 ? 0 : delta_ - *clock; // δ⌈c/δ⌉ − c
+        if (!(lattice_.distance(*target, *x) < vmax_ * (left - d_r_)) && !broken("(4b)", who))
+          return;
       }
+      const bool in_window = clock && ((*clock > target_phase_ && *clock < window_end_) ||
+                                       *clock + delta_ < window_end_);
+      if (in_window)
+        continue;
       const auto reg = read(s, cn.reg);
-      const bool in_window =
-          clock && ((*clock > target_phase && *clock < window_end) || *clock + delta < window_end);
-      if (!(reg && *reg == lattice.region_of(*x)) && !in_window)
-        broken.push_back("(4c)" + who);
+      if (!(reg && *reg == lattice_.region_of(*x)) && !broken("(4c)", who))
+        return;
     }
+  }
+
+private:
+  Lattice lattice_;
+  std::vector<ClientSlots> clients_;
+  std::vector<VsaSlots> vsas_;
+  tioa::Slot now_;
+  int delta_, target_phase_, window_end_, vmax_, d_r_, first_phase_;
+};
+
+} // namespace
+
+ClauseCheck l1mc_clauses(const VlConfig& c, const tioa::Automaton& layer, MWindow window) {
+  return [walk = L1mcWalk(c, layer, window)](const tioa::State& s) {
+    std::vector<std::string> broken;
+    walk(s, [&](const char* clause, BrokenNode node) {
+      broken.push_back(std::string(clause) + " " +
+                       (node.vn ? names::vn_name(node.index) : names::cn_name(node.index)));
+      return true;
+    });
     return broken;
   };
 }
 
 tioa::StatePredicate l1mc(const VlConfig& config, const tioa::Automaton& layer, MWindow window) {
-  const ClauseCheck clauses = l1mc_clauses(config, layer, window);
-  return [clauses](const tioa::State& s) { return clauses(s).empty(); };
+  return [walk = L1mcWalk(config, layer, window)](const tioa::State& s) {
+    bool in = true;
+    walk(s, [&](const char*, BrokenNode) {
+      in = false;
+      return false;
+    });
+    return in;
+  };
 }
 
 } // namespace vlayer_mc

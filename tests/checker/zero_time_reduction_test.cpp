@@ -369,6 +369,145 @@ TEST_CASE("random small systems: the same verdicts with and without the reductio
   CHECK(reduced_somewhere > 20);
 }
 
+// `--por all`: the reduction in the stabilisation check too.
+checker::ExploreOptions por_all() {
+  checker::ExploreOptions options = with_por(true);
+  options.por_stabilisation = true;
+  return options;
+}
+
+// A legal set drawn for `system` over its counters: one bound, two joined by "and" or
+// "or", or an equality (which executions leave again: L is not closed).
+tioa::StatePredicate random_legal_set(const Automaton& system,
+                                      const std::vector<std::string>& counters,
+                                      std::mt19937& random, std::string& text) {
+  auto pick = [&] {
+    return tioa::find_variable<int>(system, counters[random() % counters.size()]);
+  };
+  const auto a = pick(), b = pick();
+  const int u = static_cast<int>(random() % 3), v = static_cast<int>(random() % 3);
+  switch (random() % 4) {
+  case 0:
+    text = "a >= u";
+    return [=](const State& s) { return s[a] >= u; };
+  case 1:
+    text = "a >= u and b >= v";
+    return [=](const State& s) { return s[a] >= u && s[b] >= v; };
+  case 2:
+    text = "a >= u or b < v";
+    return [=](const State& s) { return s[a] >= u || s[b] < v; };
+  default:
+    text = "a = u";
+    return [=](const State& s) { return s[a] == u; };
+  }
+}
+
+TEST_CASE("random small systems: the same stabilisation verdicts and worst times with and "
+          "without the reduction",
+          "[por]") {
+  std::mt19937 random(20261129);
+  int reduced = 0, redone = 0, violated = 0;
+  for (int round = 0; round < 60; ++round) {
+    const int n = 2 + static_cast<int>(random() % 3);
+    std::vector<Automaton> parts;
+    std::vector<std::string> counters;
+    for (int i = 0; i < n; ++i) {
+      const unsigned kind = random() % 5;
+      if (kind == 0) {
+        parts.push_back(racer(i, random() % 2 == 0));
+      } else if (kind == 1) {
+        const int period = 2 + static_cast<int>(random() % 3);
+        parts.push_back(sampler(i, period, static_cast<int>(random() % period)));
+        parts.push_back(listener(i, period));
+        counters.push_back("l" + std::to_string(i) + ".acks");
+      } else if (kind == 2) {
+        const int d = 1 + static_cast<int>(random() % 2);
+        parts.push_back(channel(i, d + 1 + static_cast<int>(random() % 2), d));
+        parts.push_back(inbox(i, 1 + static_cast<int>(random() % 2)));
+        counters.push_back("i" + std::to_string(i) + ".got");
+      } else {
+        parts.push_back(worker(i, 1 + static_cast<int>(random() % 3)));
+        counters.push_back("w" + std::to_string(i) + ".count");
+      }
+    }
+    if (counters.empty())
+      continue;
+    const Automaton system = tioa::compose("random", parts);
+    std::string text;
+    const tioa::StatePredicate legal = random_legal_set(system, counters, random, text);
+    INFO("round " << round << ", L: " << text);
+    const PropertyResult full = check_stabilisation(system, legal, with_por(false));
+    const PropertyResult on = check_stabilisation(system, legal, por_all());
+    CHECK(on.verdict == full.verdict);
+    CHECK(on.worst_time == full.worst_time);
+    CHECK(on.states <= full.states);
+    reduced += on.por && on.reduced_states > 0 ? 1 : 0;
+    redone += !on.por ? 1 : 0;
+    violated += on.verdict == Verdict::violated ? 1 : 0;
+    if (on.trace) {
+      std::string why;
+      CHECK(replay(tioa::SuccessorGenerator(system), *on.trace, &why));
+    }
+  }
+  // The sample exercises each way: reduced, redone in full, and violated.
+  CHECK(reduced > 10);
+  CHECK(redone > 0);
+  CHECK(violated > 0);
+}
+
+TEST_CASE("stabilisation with the reduction keeps a state outside L that lasts no time", "[por]") {
+  // In the first instant both workers work once. L = "w0 has worked or w1 has not": it
+  // fails only between w1's step and w0's, so only the order "w1 first" leaves L, for no
+  // time. That still counts (L is not closed: the check measures the last state outside
+  // L), so the worst time is 1; a reduction that did not see L would take w0 first only.
+  const Automaton system = workers(2, 1);
+  const auto c0 = tioa::find_variable<int>(system, "w0.count");
+  const auto c1 = tioa::find_variable<int>(system, "w1.count");
+  const tioa::StatePredicate legal = [=](const State& s) { return s[c0] >= 1 || s[c1] < 1; };
+  const PropertyResult full = check_stabilisation(system, legal, with_por(false));
+  const PropertyResult on = check_stabilisation(system, legal, por_all());
+  REQUIRE(full.verdict == Verdict::holds);
+  CHECK(full.worst_time == 1);
+  CHECK(on.verdict == Verdict::holds);
+  CHECK(on.worst_time == 1);
+}
+
+TEST_CASE("stabilisation is checked again in full when the reduced graph has a time-lock in L",
+          "[por]") {
+  // After the racer's `b` time cannot pass again, in L: where the reduction left steps out,
+  // a time-lock of the full graph could be missing from the reduced one (the argument in
+  // checker/stabilisation.cpp), so the check runs again without it.
+  const Automaton system = tioa::compose("racing", {worker(0, 2), worker(1, 2), racer(2, true)});
+  const auto x = tioa::find_variable<int>(system, "r2.x");
+  const tioa::StatePredicate legal = [=](const State& s) { return s[x] != 0; };
+  const PropertyResult full = check_stabilisation(system, legal, with_por(false));
+  const PropertyResult on = check_stabilisation(system, legal, por_all());
+  CHECK(on.verdict == full.verdict);
+  CHECK(on.worst_time == full.worst_time);
+  CHECK_FALSE(on.por);
+  CHECK(std::any_of(on.notes.begin(), on.notes.end(), [](const std::string& note) {
+    return note.find("checked without the reduction") != std::string::npos;
+  }));
+}
+
+TEST_CASE("stabilisation with the reduction: fewer states, the full graph's worst time", "[por]") {
+  // Three workers that must each work once an instant, counting to 3: L = all at 3.
+  const Automaton system = workers(3, 3);
+  const auto c0 = tioa::find_variable<int>(system, "w0.count");
+  const auto c2 = tioa::find_variable<int>(system, "w2.count");
+  const tioa::StatePredicate legal = [=](const State& s) { return s[c0] == 3 && s[c2] == 3; };
+  const PropertyResult full = check_stabilisation(system, legal, with_por(false));
+  const PropertyResult on = check_stabilisation(system, legal, por_all());
+  REQUIRE(full.verdict == Verdict::holds);
+  CHECK(on.verdict == Verdict::holds);
+  CHECK(on.worst_time == full.worst_time);
+  CHECK(on.por);
+  CHECK(on.states < full.states);
+  std::string why;
+  REQUIRE(on.trace);
+  CHECK(replay(tioa::SuccessorGenerator(system), *on.trace, &why));
+}
+
 TEST_CASE("a sampler's declared value keeps its firing out of the set in other instants", "[por]") {
   // Two samplers with period 3 firing at phases 0 and 1, and their listeners. In full,
   // the two samples of an instant interleave; reduced, when neither sample can enable a
