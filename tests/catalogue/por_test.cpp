@@ -83,6 +83,46 @@ TEST_CASE("the suite's invariants and time-locks: the same verdicts with and wit
   CHECK(too_large <= 2); // the two five-robot entries at most
 }
 
+// [long] (opt-in: ctest -L long): about 90 s on two threads in a Release build.
+TEST_CASE("the suite's timed stabilisation checks: the same verdicts and worst times with "
+          "--por all",
+          "[catalogue][por][long]") {
+  // Every suite entry of a timed model whose property measures stabilisation (Def 3.5, and
+  // Lemma 7.3 built on it; Theorem 7.5's first part is the same check, its known LMC makes
+  // it slow), on fewer sampled start states where the model samples them.
+  int compared = 0, reduced = 0;
+  for (const auto& definition : catalogue::builtin_models().models())
+    for (const auto& entry : definition.suite) {
+      std::vector<std::string> settings;
+      bool samples = false;
+      for (const auto& [name, value] : entry.params) {
+        samples = samples || name == "samples";
+        settings.push_back(name + "=" + (name == "samples" ? std::string("5") : value.text()));
+      }
+      const auto instance = definition.build(catalogue::resolve_params(definition, settings));
+      if (!instance.system.timed())
+        continue;
+      for (const auto& p : instance.properties) {
+        const bool measures =
+            p.kind == checker::PropertyKind::stabilisation || p.name == "lemma-7.3";
+        if (p.name != entry.property || !measures)
+          continue;
+        INFO(definition.name << " " << p.name << (samples ? " (5 samples)" : ""));
+        checker::ExploreOptions off, all;
+        off.threads = all.threads = 2;
+        all.por = all.por_stabilisation = true;
+        const checker::PropertyResult full = checker::run_property(instance.system, p, off);
+        const checker::PropertyResult on = checker::run_property(instance.system, p, all);
+        CHECK(on.verdict == full.verdict);
+        CHECK(on.worst_time == full.worst_time);
+        reduced += on.reduced_states > 0 ? 1 : 0;
+        ++compared;
+      }
+    }
+  CHECK(compared >= 4);
+  CHECK(reduced >= 4);
+}
+
 // [slow]: over 10 s under the sanitizers (tools/run-tests.sh skips it there).
 TEST_CASE("vlayer-mc: fewer states and the same time-lock verdict with --por",
           "[catalogue][vlayer_mc][por][slow]") {
