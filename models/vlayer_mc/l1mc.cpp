@@ -29,17 +29,16 @@ struct VsaSlots {
   std::vector<tioa::Slot> M;
 };
 
-// Walks the clauses (2)–(4c) on a state, calling `broken(clause, node)` for each clause a
-// node breaks (clause "(2)", node VN_1); stops at the first call that
-// returns false.
-// The predicate stops at the first broken clause (so it reads no more than it needs,
-// which keeps the zero-time reduction's dependencies on it small); the clause list does
-// not.
+// A node that breaks a clause: VN_index or CN_index.
 struct BrokenNode {
   bool vn; // else a CN
   int index;
 };
 
+// Walks the clauses (2)–(4c) on a state, calling `broken(clause, node)` for each clause a
+// node breaks (clause "(2)", node VN_1); stops at the first call that returns false. The
+// predicate stops at the first broken clause (it reads no more than it needs, which keeps
+// the zero-time reduction's dependencies on it small); the clause list does not.
 class L1mcWalk {
 public:
   L1mcWalk(const VlConfig& c, const tioa::Automaton& layer, MWindow window)
