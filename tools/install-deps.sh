@@ -4,6 +4,8 @@ set -euo pipefail
 packages=(g++ cmake ninja-build python3
           libboost-graph-dev libboost-dev libeigen3-dev catch2 libfmt-dev libcli11-dev
           nlohmann-json3-dev
+          # BuDDy: the symbolic checks (checker/symbolic_space.hpp)
+          libbdd-dev
           # distributed exploration under mpirun (issue 18, cli/mpi_run.hpp; the build
           # leaves it out and tests/cli/mpi_same.py is skipped without them)
           openmpi-bin libopenmpi-dev

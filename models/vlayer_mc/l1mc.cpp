@@ -1,6 +1,8 @@
 #include "models/vlayer_mc/l1mc.hpp"
 
+#include <memory>
 #include <optional>
+#include <string_view>
 
 #include "models/vlayer_mc/names.hpp"
 #include "models/vlayer_mc/rw.hpp"
@@ -63,14 +65,30 @@ public:
     }
   }
 
+  // Every clause of every node.
   template <class Broken> void operator()(const tioa::State& s, Broken&& broken) const {
-    const int time = *read(s, now_);
+    walk(s, broken, [](const char*, BrokenNode) { return true; });
+  }
+
+  // Only the clauses `wanted` selects, reading only what they need.
+  template <class Broken, class Wanted>
+  void walk(const tioa::State& s, Broken&& broken, Wanted&& wanted) const {
+    std::optional<int> now;
+    const auto time = [&] {
+      if (!now)
+        now = *read(s, now_);
+      return *now;
+    };
+    if (!vsas_.empty() && wanted("(2)", BrokenNode{true, -1}))
+      (void)time(); // (read first, as the walk always did)
     for (std::size_t u = 0; u < vsas_.size(); ++u) {
       const VsaSlots& vn = vsas_[u];
+      if (!wanted("(2)", BrokenNode{true, static_cast<int>(u)}))
+        continue;
       if (vn.failed && s.code(*vn.failed) != 0)
         continue;
       const auto clock = read(s, vn.clock);
-      const bool clock_ok = !clock || *clock == time;
+      const bool clock_ok = !clock || *clock == time();
       bool heard = false;
       for (std::size_t m = 0; m < vn.M.size() && !heard; ++m)
         heard = read(s, vn.M[m]).has_value();
@@ -81,12 +99,16 @@ public:
     for (std::size_t p = 0; p < clients_.size(); ++p) {
       const ClientSlots& cn = clients_[p];
       const BrokenNode who{false, static_cast<int>(p)};
+      const bool want3 = wanted("(3)", who), want4a = wanted("(4a)", who),
+                 want4b = wanted("(4b)", who), want4c = wanted("(4c)", who);
+      if (!want3 && !want4a && !want4b && !want4c)
+        continue;
       if (cn.failed && s.code(*cn.failed) != 0)
         continue;
       // (3) compares velocity vectors (D4, D27): "steer to q" is the vector of this quantum's
       // step from RW.loc(p), so steering to the point one stands on is the zero vector, and so
       // is RW.vel(p) = ⊥ (our RW moves a robot only towards a point, D8).
-      const auto v = read(s, cn.v);
+      const auto v = want3 ? read(s, cn.v) : std::nullopt;
       if (v) {
         const auto vel = read(s, cn.vel);
         const Point at = static_cast<Point>(*read(s, cn.loc));
@@ -96,18 +118,22 @@ public:
         if (step(v) != step(vel) && !broken("(3)", who))
           return;
       }
+      if (!want4a && !want4b && !want4c)
+        continue;
       const auto x = read(s, cn.x);
       if (!x)
         continue;
       const auto clock = read(s, cn.clock);
-      if ((*x != *read(s, cn.loc) || clock != time) && !broken("(4a)", who))
+      if (want4a && (*x != *read(s, cn.loc) || clock != time()) && !broken("(4a)", who))
         return;
-      const auto target = read(s, cn.target);
+      const auto target = want4b ? read(s, cn.target) : std::nullopt;
       if (target && *target != *x) {
         const int left = !clock || *clock == 0 ? 0 : delta_ - *clock; // δ⌈c/δ⌉ − c
         if (!(lattice_.distance(*target, *x) < vmax_ * (left - d_r_)) && !broken("(4b)", who))
           return;
       }
+      if (!want4c)
+        continue;
       const bool in_window = clock && ((*clock > target_phase_ && *clock < window_end_) ||
                                        *clock + delta_ < window_end_);
       if (in_window)
@@ -127,6 +153,34 @@ private:
 };
 
 } // namespace
+
+std::vector<tioa::StatePredicate> l1mc_conjuncts(const VlConfig& config,
+                                                 const tioa::Automaton& layer, MWindow window) {
+  const auto walk = std::make_shared<const L1mcWalk>(config, layer, window);
+  std::vector<tioa::StatePredicate> conjuncts;
+  const auto add = [&](const char* clause, BrokenNode node) {
+    conjuncts.push_back([walk, clause, node](const tioa::State& s) {
+      bool in = true;
+      walk->walk(
+          s,
+          [&](const char*, BrokenNode) {
+            in = false;
+            return false;
+          },
+          [&](const char* c, BrokenNode n) {
+            return std::string_view(c) == clause && n.vn == node.vn &&
+                   (n.index == node.index || n.index < 0);
+          });
+      return in;
+    });
+  };
+  for (int u = 0; u < config.lattice().regions(); ++u)
+    add("(2)", BrokenNode{true, u});
+  for (int p = 0; p < config.robots; ++p)
+    for (const char* clause : {"(3)", "(4a)", "(4b)", "(4c)"})
+      add(clause, BrokenNode{false, p});
+  return conjuncts;
+}
 
 ClauseCheck l1mc_clauses(const VlConfig& c, const tioa::Automaton& layer, MWindow window) {
   return [walk = L1mcWalk(c, layer, window)](const tioa::State& s) {

@@ -40,5 +40,12 @@ ClauseCheck l1mc_clauses(const VlConfig& config, const tioa::Automaton& layer,
                          MWindow window = MWindow::as_printed);
 tioa::StatePredicate l1mc(const VlConfig& config, const tioa::Automaton& layer,
                           MWindow window = MWindow::as_printed);
+// L1MC as a conjunction: one predicate per clause and node ("(2) VN_u", "(3) CN_p", ...),
+// each reading only what its clause reads; a state is in L1MC exactly when it satisfies
+// all of them. The symbolic check builds L1MC from them, clause by clause
+// (checker/symbolic_stabilisation.hpp).
+std::vector<tioa::StatePredicate> l1mc_conjuncts(const VlConfig& config,
+                                                 const tioa::Automaton& layer,
+                                                 MWindow window = MWindow::as_printed);
 
 } // namespace vlayer_mc

@@ -117,6 +117,10 @@ tioa::Automaton u_layer(const VlConfig& config, const ArbitraryStarts& a) {
   return vlayer(with_junk(config, a), a.faults);
 }
 
+tioa::Automaton u_environment(const VlConfig& config, const ArbitraryStarts& a) {
+  return environment(with_junk(config, a), a.faults);
+}
+
 std::optional<bool> is_u_start(const VlConfig& config, const ArbitraryStarts& a,
                                const tioa::Word* state, std::uint64_t limit) {
   VlConfig c = with_junk(config, a);

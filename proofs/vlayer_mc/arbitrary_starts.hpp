@@ -28,6 +28,9 @@ struct ArbitraryStarts {
   // none (seed 000 line 772, D13), the default; the instance's robot_faults and vsa_faults
   // let them happen at any time.
   Faults faults = after_t0;
+  // lemma-7.3: every start state, decided symbolically (proofs/vlayer_mc/symbolic_starts.hpp),
+  // or `samples` of them drawn at random (the `starts` parameter).
+  bool symbolic = false;
   // D31: each client's VBDelay holds up to this many messages of any kind and id besides its
   // own cn-update, and VBcast as many of them on their way (the `junk` parameter, at least
   // 2 by default: issue 15).
@@ -59,6 +62,9 @@ UStarts u_starts(const VlConfig& config, const ArbitraryStarts& starts,
 // the faults and junk slots of `starts` (UStarts::layer), and the name their results give
 // it (PropertyResult::trace_system_name).
 tioa::Automaton u_layer(const VlConfig& config, const ArbitraryStarts& starts);
+// Its environment RW ‖ VW ‖ VBcast ‖ ClientFaults (with the junk slots of `starts`), whose
+// reachable states R(env) are the environment's part of the start states.
+tioa::Automaton u_environment(const VlConfig& config, const ArbitraryStarts& starts);
 inline constexpr const char* u_layer_name = "U(VLNodes) || R(RW || VW || VBcast)";
 
 // Whether `state` (of u_layer) is a start state of U(VLNodes) || R(env): every valuation of

@@ -1,0 +1,75 @@
+#include "checker/symbolic_system.hpp"
+
+namespace checker::symbolic {
+
+namespace {
+
+std::vector<StepRelation> learn_actions(const Space& space, LearningFigures& figures) {
+  std::vector<StepRelation> actions;
+  for (std::size_t a = 0; a < space.automaton().actions().size(); ++a)
+    actions.push_back(learn_action(space, a, figures));
+  return actions;
+}
+
+} // namespace
+
+System::System(const Space& space, LearningFigures& figures)
+    : space_(&space), zero_time_(learn_actions(space, figures)), tick_(learn_tick(space, figures)) {
+}
+
+// Chained over the groups, each applied to the states not yet expanded (the frontier), which
+// grows as the groups before it add states: a group's images reach the next group at once.
+bdd System::closure(const bdd& set, bool with_tick, bool backward) const {
+  bdd all = set, frontier = set;
+  const auto apply = [&](const StepRelation& step) {
+    const bdd fresh = (backward ? step.preimage(frontier) : step.image(frontier)) & !all;
+    all |= fresh;
+    frontier |= fresh;
+    return fresh;
+  };
+  while (frontier != bddfalse) {
+    if (stop_ && stop_())
+      throw Stopped{};
+    bdd added = bddfalse;
+    for (const StepRelation& step : zero_time_)
+      added |= apply(step);
+    if (with_tick)
+      added |= apply(tick_);
+    frontier = added;
+  }
+  return all;
+}
+
+bdd System::zero_time_closure(const bdd& set) const {
+  return closure(set, false, false);
+}
+bdd System::back_zero_time_closure(const bdd& set) const {
+  return closure(set, false, true);
+}
+bdd System::reach(const bdd& set) const {
+  return closure(set, true, false);
+}
+bdd System::back_reach(const bdd& set) const {
+  return closure(set, true, true);
+}
+
+bdd System::time_locks(const bdd& within) const {
+  return within & !back_zero_time_closure(tick_.enabled());
+}
+
+bdd System::zero_time_forever(const bdd& within) const {
+  // The greatest set of states of `within` that each have a zero-time step into it.
+  bdd keep = within, before;
+  do {
+    if (stop_ && stop_())
+      throw Stopped{};
+    before = keep;
+    bdd onward = bddfalse;
+    for (const StepRelation& step : zero_time_)
+      onward |= step.preimage(keep);
+    keep &= onward;
+  } while (keep != before);
+  return keep;
+}
+
+} // namespace checker::symbolic

@@ -1,0 +1,48 @@
+#pragma once
+// An automaton's steps as learned relations (symbolic_learning.hpp), and the fixpoints the
+// symbolic checks are made of. Fixpoints chain: each step group is applied in turn to the
+// states not yet expanded, including those the groups before it just added.
+
+#include <functional>
+#include <vector>
+
+#include "checker/symbolic_learning.hpp"
+
+namespace checker::symbolic {
+
+// Thrown by a fixpoint of a System whose stop condition became true (set_stop).
+struct Stopped {};
+
+class System {
+public:
+  // Learns every action and the tick of `space`'s automaton.
+  System(const Space& space, LearningFigures& figures);
+
+  const Space& space() const { return *space_; }
+  const StepRelation& tick() const { return tick_; }
+  // Asked at every round of every fixpoint; when it says true, the fixpoint throws Stopped.
+  void set_stop(std::function<bool()> stop) { stop_ = std::move(stop); }
+
+  // `set` and every state its zero-time steps lead to (for an untimed automaton: every step).
+  bdd zero_time_closure(const bdd& set) const;
+  // `set` and the states whose zero-time steps lead into it.
+  bdd back_zero_time_closure(const bdd& set) const;
+  // Everything reachable from `set`, ticks included; and everything that reaches it.
+  bdd reach(const bdd& set) const;
+  bdd back_reach(const bdd& set) const;
+  // The states of `within` from which no tick can ever come (zero-time steps only: the
+  // time-locks of a timed automaton).
+  bdd time_locks(const bdd& within) const;
+  // The states of `within` from which zero-time steps can go on for ever inside `within`.
+  bdd zero_time_forever(const bdd& within) const;
+
+private:
+  bdd closure(const bdd& set, bool with_tick, bool backward) const;
+
+  const Space* space_;
+  std::vector<StepRelation> zero_time_;
+  StepRelation tick_;
+  std::function<bool()> stop_;
+};
+
+} // namespace checker::symbolic

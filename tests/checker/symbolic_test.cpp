@@ -1,0 +1,131 @@
+// The symbolic checks (checker/symbolic_*.hpp) against explicit exploration: the same
+// reachable states, and the same worst stabilisation time from every start state.
+#include <catch2/catch.hpp>
+
+#include "checker/checks.hpp"
+#include "checker/symbolic_stabilisation.hpp"
+#include "helpers.hpp"
+#include "models/fischer/fischer.hpp"
+#include "models/token_ring/token_ring.hpp"
+
+using namespace checker;
+using namespace checker_test;
+namespace sym = checker::symbolic;
+
+namespace {
+
+tioa::StatePredicate variable_is(const tioa::Automaton& a, const std::string& name, int value) {
+  const tioa::Slot slot = slot_of(a, name);
+  const std::uint64_t code = static_cast<std::uint64_t>(value - a.layout().find(name)->lo);
+  return [slot, code](const State& s) { return s.code(slot) == code; };
+}
+
+std::uint64_t explicit_count(const tioa::Automaton& a) {
+  const tioa::SuccessorGenerator generator(a);
+  const Exploration ex = explore(generator, a.start(), ExploreOptions{});
+  REQUIRE(ex.complete());
+  return ex.store.size();
+}
+
+double symbolic_count(const tioa::Automaton& a) {
+  const sym::BddSession session(a.layout().bits());
+  const sym::Space space(a);
+  sym::BddSession::reorder_by_variables(a.layout());
+  sym::LearningFigures figures;
+  const sym::System system(space, figures);
+  CHECK(figures.leaves > 0);
+  return space.count(system.reach(sym::start_states(space, a.start())));
+}
+
+// The symbolic worst time from every start state of `a` (which must be U(A): every
+// valuation), and check_stabilisation's.
+struct BothWays {
+  std::optional<std::uint64_t> symbolic, explicit_worst;
+  double time_locked = 0, zero_time_forever = 0;
+  Verdict verdict = Verdict::incomplete;
+};
+
+BothWays stabilise_both_ways(const tioa::Automaton& a, const tioa::StatePredicate& legal) {
+  BothWays both;
+  {
+    const sym::BddSession session(a.layout().bits());
+    const sym::Space space(a);
+    sym::LearningFigures figures;
+    const sym::System system(space, figures);
+    sym::LearningFigures predicate;
+    const bdd in_legal = sym::learn_predicate(space, legal, predicate);
+    const sym::StabilisationResult r = sym::stabilise(system, space.valid(), in_legal, 0);
+    CHECK(r.start_states == space.count(space.valid()));
+    both.symbolic = r.worst;
+    both.time_locked = r.time_locked;
+    both.zero_time_forever = r.zero_time_forever;
+    if (r.worst && *r.worst > 0) {
+      // The picked start state reaches the worst time, explored explicitly from it alone.
+      REQUIRE_FALSE(r.worst_start.empty());
+      const tioa::Automaton from_it = tioa::Start(
+          a, tioa::StartSet::listed(a.layout().bits(), a.words(), r.worst_start, "picked"));
+      CHECK(check_stabilisation(from_it, legal, {}).worst_time == r.worst);
+    }
+  }
+  const PropertyResult r = check_stabilisation(a, legal, {});
+  both.explicit_worst = r.worst_time;
+  both.verdict = r.verdict;
+  return both;
+}
+
+} // namespace
+
+TEST_CASE("symbolic: reachable states as explicit exploration counts them", "[checker][symbolic]") {
+  for (int n : {2, 3, 4}) {
+    const fischer::Fischer f = fischer::build(n, 1, 2);
+    CHECK(symbolic_count(f.system) == static_cast<double>(explicit_count(f.system)));
+  }
+  for (auto [n, k] : {std::pair{3, 3}, std::pair{4, 5}}) {
+    const token_ring::TokenRing ring = token_ring::build(n, k);
+    CHECK(symbolic_count(ring.system) == static_cast<double>(explicit_count(ring.system)));
+  }
+}
+
+TEST_CASE("symbolic: the worst time from every start state, as check_stabilisation measures it",
+          "[checker][symbolic]") {
+  SECTION("a timed countdown: top quanta") {
+    const tioa::Automaton c = timed_countdown(4);
+    const BothWays both = stabilise_both_ways(c, variable_is(c, "x", 0));
+    CHECK(both.symbolic == 4u);
+    CHECK(both.explicit_worst == 4u);
+    CHECK(both.time_locked == 0);
+    CHECK(both.zero_time_forever == 0);
+  }
+  SECTION("untimed: no ticks to count time in, refused") {
+    const tioa::Automaton c = countdown(5, true);
+    const sym::BddSession session(c.layout().bits());
+    const sym::Space space(c);
+    sym::LearningFigures figures;
+    const sym::System system(space, figures);
+    CHECK_THROWS_AS(sym::stabilise(system, space.valid(), space.valid(), 0), std::invalid_argument);
+  }
+  SECTION("a stop ends it, incomplete") {
+    const tioa::Automaton c = timed_countdown(4);
+    const sym::BddSession session(c.layout().bits());
+    const sym::Space space(c);
+    sym::LearningFigures figures;
+    sym::System system(space, figures);
+    system.set_stop([] { return true; });
+    CHECK(sym::stabilise(system, space.valid(), space.valid(), 0).stopped);
+  }
+  SECTION("a zero-time cycle outside L") {
+    const tioa::Automaton c = timed_countdown(3, true);
+    const BothWays both = stabilise_both_ways(c, variable_is(c, "x", 0));
+    CHECK(both.zero_time_forever > 0);
+  }
+  SECTION("Fischer from every valuation: mutual exclusion") {
+    const fischer::Fischer f = fischer::build(2, 1, 2);
+    const tioa::Automaton u = tioa::U(f.system);
+    const BothWays both = stabilise_both_ways(u, f.at_most_one_in_cs);
+    INFO("explicit verdict " << static_cast<int>(both.verdict));
+    if (both.explicit_worst)
+      CHECK(both.symbolic == both.explicit_worst);
+    else
+      CHECK_FALSE(both.symbolic);
+  }
+}
