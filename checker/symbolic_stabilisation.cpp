@@ -1,5 +1,6 @@
 #include "checker/symbolic_stabilisation.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace checker::symbolic {
@@ -9,41 +10,56 @@ namespace {
 // A start state with an execution that is in `target` (a set of layer k's states) at time k.
 std::vector<Word> start_through_layers(const System& system, const std::vector<bdd>& layers,
                                        const bdd& start, bdd target, std::size_t k) {
+  // Each layer is closed under zero-time steps, so the way back stays inside it.
   for (; k > 0; --k)
-    target = system.tick().preimage(system.back_zero_time_closure(target)) & layers[k - 1];
-  const bdd starts = system.back_zero_time_closure(target) & start;
+    target =
+        system.tick().preimage(system.back_zero_time_closure(target, layers[k])) & layers[k - 1];
+  const bdd starts = system.back_zero_time_closure(target, layers[0]) & start;
   return starts == bddfalse ? std::vector<Word>{} : system.space().pick(starts);
 }
 
 void run_layers(const System& system, const bdd& start, const bdd& legal,
                 std::uint64_t witness_after, StabilisationResult& r) {
   const Space& space = system.space();
-  std::vector<bdd> layers{system.zero_time_closure(start)}, later;
-  while (true) {
-    later.push_back(system.reach(layers.back()));
-    const std::size_t k = later.size() - 1;
-    if ((later[k] & !legal) == bddfalse) {
+  std::vector<bdd> layers{system.zero_time_closure(start)};
+  const bdd everything = system.reach(layers[0]);
+  r.reachable = space.count(everything);
+  // The least k with A_k inside L: X_k inside L and everything after it too (a layer with a
+  // state outside L needs no reach). The layers repeat at last (finitely many sets): then A_j
+  // is the union of the period, and outside L there means no worst time.
+  bdd outside_for_ever = bddfalse;
+  std::size_t period_start = 0;
+  for (std::size_t k = 0;; ++k) {
+    if ((layers[k] & !legal) == bddfalse && (system.reach(layers[k]) & !legal) == bddfalse) {
       r.worst = k;
       break;
     }
-    if (k > 0 && later[k] == later[k - 1])
-      break; // outside L at every time
-    layers.push_back(system.zero_time_closure(system.tick().image(layers.back())));
+    const bdd next = system.zero_time_closure(system.tick().image(layers[k]));
+    const auto seen = std::find(layers.begin(), layers.end(), next);
+    if (seen != layers.end()) {
+      period_start = static_cast<std::size_t>(seen - layers.begin());
+      bdd period = bddfalse;
+      for (std::size_t j = period_start; j < layers.size(); ++j)
+        period |= layers[j];
+      // (Not empty: a period inside L would have ended the loop at its first layer.)
+      outside_for_ever = period & !legal;
+      break;
+    }
+    layers.push_back(next);
   }
   r.layers = layers.size();
-  r.reachable = space.count(later[0]);
   if (!r.worst || *r.worst > witness_after) {
     // Outside L at time w - 1: since A_w lies in L and A_{w-1} = X_{w-1} ∪ A_w, those states
-    // are X_{w-1}'s. With no worst time: a state outside L reachable from the last layer,
-    // back to that layer.
-    const std::size_t late = r.worst ? *r.worst - 1 : later.size() - 1;
-    const bdd outside = later[late] & !legal;
+    // are X_{w-1}'s. With no worst time: a state of the period outside L, reached from its
+    // first layer.
+    const std::size_t late = r.worst ? *r.worst - 1 : period_start;
+    const bdd outside = r.worst ? layers[late] & !legal : outside_for_ever;
     r.late_outside = space.count(outside);
     const bdd reaching = r.worst ? outside : system.back_reach(outside) & layers[late];
     r.worst_start = start_through_layers(system, layers, start, reaching, late);
   }
-  const bdd locked = system.time_locks(later[0]);
-  const bdd forever = system.zero_time_forever(later[0]);
+  const bdd locked = system.time_locks(everything);
+  const bdd forever = system.zero_time_forever(everything);
   r.time_locked = space.count(locked);
   r.zero_time_forever = space.count(forever);
   if (locked != bddfalse || forever != bddfalse) {

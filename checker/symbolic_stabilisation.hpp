@@ -7,10 +7,11 @@
 //   X_0 = the zero-time closure of the start states,  X_{k+1} = the zero-time closure of
 //   one tick from X_k,
 // and those it can be in at any time >= k are A_k = everything reachable from X_k. The worst
-// time is the least k with A_k inside L. The A_k shrink (A_k = X_k ∪ A_{k+1}), and once
-// A_k = A_{k+1} they stay so (then X_k lies in A_{k+1}, so every successor of X_k, hence
-// X_{k+1}, lies in A_{k+2}): a repeated A_k outside L means an execution outside L at
-// every time, no worst time.
+// time is the least k with A_k inside L: the layers are computed one by one, and only a
+// layer inside L has its A_k computed (a layer with a state outside L has A_k outside too).
+// There are finitely many sets, so the layers repeat at last (X_k = X_j, j < k); from j on
+// they go round, A_j is the union of the period, and if no earlier k ended the search that
+// union has a state outside L: an execution outside L at every time, no worst time.
 //
 // Time-locks (states from which no tick can come) and states from which zero-time steps can
 // go on for ever are found too: an execution that stops time is not one the layers judge, so

@@ -19,10 +19,10 @@ System::System(const Space& space, LearningFigures& figures)
 
 // Chained over the groups, each applied to the states not yet expanded (the frontier), which
 // grows as the groups before it add states: a group's images reach the next group at once.
-bdd System::closure(const bdd& set, bool with_tick, bool backward) const {
+bdd System::closure(const bdd& set, bool with_tick, bool backward, const bdd& within) const {
   bdd all = set, frontier = set;
   const auto apply = [&](const StepRelation& step) {
-    const bdd fresh = (backward ? step.preimage(frontier) : step.image(frontier)) & !all;
+    const bdd fresh = (backward ? step.preimage(frontier) : step.image(frontier)) & within & !all;
     all |= fresh;
     frontier |= fresh;
     return fresh;
@@ -41,20 +41,20 @@ bdd System::closure(const bdd& set, bool with_tick, bool backward) const {
 }
 
 bdd System::zero_time_closure(const bdd& set) const {
-  return closure(set, false, false);
+  return closure(set, false, false, bddtrue);
 }
-bdd System::back_zero_time_closure(const bdd& set) const {
-  return closure(set, false, true);
+bdd System::back_zero_time_closure(const bdd& set, const bdd& within) const {
+  return closure(set, false, true, within);
 }
 bdd System::reach(const bdd& set) const {
-  return closure(set, true, false);
+  return closure(set, true, false, bddtrue);
 }
 bdd System::back_reach(const bdd& set) const {
-  return closure(set, true, true);
+  return closure(set, true, true, bddtrue);
 }
 
 bdd System::time_locks(const bdd& within) const {
-  return within & !back_zero_time_closure(tick_.enabled());
+  return within & !back_zero_time_closure(tick_.enabled(), bddtrue);
 }
 
 bdd System::zero_time_forever(const bdd& within) const {

@@ -25,8 +25,8 @@ public:
 
   // `set` and every state its zero-time steps lead to (for an untimed automaton: every step).
   bdd zero_time_closure(const bdd& set) const;
-  // `set` and the states whose zero-time steps lead into it.
-  bdd back_zero_time_closure(const bdd& set) const;
+  // `set` and the states of `within` whose zero-time steps inside `within` lead into it.
+  bdd back_zero_time_closure(const bdd& set, const bdd& within) const;
   // Everything reachable from `set`, ticks included; and everything that reaches it.
   bdd reach(const bdd& set) const;
   bdd back_reach(const bdd& set) const;
@@ -37,7 +37,7 @@ public:
   bdd zero_time_forever(const bdd& within) const;
 
 private:
-  bdd closure(const bdd& set, bool with_tick, bool backward) const;
+  bdd closure(const bdd& set, bool with_tick, bool backward, const bdd& within) const;
 
   const Space* space_;
   std::vector<StepRelation> zero_time_;

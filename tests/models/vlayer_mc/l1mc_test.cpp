@@ -2,6 +2,8 @@
 // on every reachable state of the smallest instance.
 #include <catch2/catch.hpp>
 
+#include <random>
+
 #include "checker/checks.hpp"
 #include "checker/trace.hpp"
 #include "models/vlayer_mc/l1mc.hpp"
@@ -97,4 +99,42 @@ TEST_CASE("vlayer L1MC: every reachable state of the smallest instance (finding 
       checker::check_invariant(layer, vlayer_mc::l1mc(c, layer, vlayer_mc::MWindow::closed), {});
   CHECK(closed.verdict == checker::Verdict::holds);
   CHECK(closed.states == 2'706);
+}
+
+// The symbolic check builds L1MC from its conjuncts: on random states (every variable at a
+// random code) of 1x2 with two robots, each window, their conjunction is L1MC, and a state
+// outside L1MC breaks exactly the conjuncts l1mc_clauses names.
+TEST_CASE("vlayer L1MC: the conjuncts together are L1MC", "[vlayer]") {
+  vlayer_mc::VlConfig c;
+  c.robots = 2;
+  const auto layer = vlayer_mc::vlayer(c, {.robots = true, .vsas = true});
+  std::mt19937_64 random(7);
+  for (const auto window : {vlayer_mc::MWindow::as_printed, vlayer_mc::MWindow::closed}) {
+    const auto whole = vlayer_mc::l1mc(c, layer, window);
+    const auto clauses = vlayer_mc::l1mc_clauses(c, layer, window);
+    const auto conjuncts = vlayer_mc::l1mc_conjuncts(c, layer, window);
+    REQUIRE(conjuncts.size() == 2 + 2 * 4); // (2) per region, (3)-(4c) per robot
+    int inside = 0, outside = 0;
+    for (int n = 0; n < 20000; ++n) {
+      Words s(layer.words() + 1, 0);
+      tioa::State state(s.data(), 0);
+      for (const auto& v : layer.layout().variables())
+        state.set_code(v.slot(),
+                       std::uniform_int_distribution<std::uint64_t>(0, v.code_count() - 1)(random));
+      // Often every node in step with RW, so that the later clauses are reached too.
+      if (n % 2 == 0)
+        for (const auto& v : layer.layout().variables())
+          if (v.name.find("clock") != std::string::npos)
+            state.set_code(v.slot(), state.code(layer.layout().find("RW.now")->slot()));
+      std::size_t broken_conjuncts = 0;
+      for (const auto& conjunct : conjuncts)
+        broken_conjuncts += conjunct(state) ? 0 : 1;
+      const bool in = whole(state);
+      CHECK(in == (broken_conjuncts == 0));
+      CHECK(clauses(state).size() == broken_conjuncts);
+      (in ? inside : outside) += 1;
+    }
+    CHECK(inside > 0);
+    CHECK(outside > 0);
+  }
 }
