@@ -70,11 +70,12 @@ PropertyResult check_symbolically(const VlConfig& c, MWindow window, const Arbit
       stabilise_from_u(c, starts, layer, l1mc_conjuncts(c, layer, window), bound, options.limits);
   const checker::symbolic::StabilisationResult& s = run.result;
   const std::string what = "Lemma 7.3 (in L1MC from any t > eps_sample on)";
+  const bool fits = s.start_states < 1.8e19; // (in 64 bits)
   const checker::Coverage coverage{
-      checker::Starts::all,
-      s.start_states < 1.8e19 ? static_cast<std::uint64_t>(s.start_states) : 0,
-      s.start_states < 1.8e19 ? std::optional<std::uint64_t>(s.start_states) : std::nullopt,
-      u_layer_name, "every one, decided symbolically (binary decision diagrams)"};
+      checker::Starts::all, fits && !s.stopped ? static_cast<std::uint64_t>(s.start_states) : 0,
+      fits ? std::optional<std::uint64_t>(s.start_states) : std::nullopt, u_layer_name,
+      s.stopped ? "decided symbolically, stopped at the time limit"
+                : "every one, decided symbolically (binary decision diagrams)"};
   const std::string figure =
       scientific(s.start_states) + " start states (R(env): " + scientific(run.environment_states) +
       " states), " + scientific(s.reachable) + " reachable, " + std::to_string(s.layers) +
@@ -88,7 +89,11 @@ PropertyResult check_symbolically(const VlConfig& c, MWindow window, const Arbit
     r.message = what + ": the symbolic computation stopped at the time limit";
   } else {
     const bool late = !s.worst || *s.worst > bound;
+    const bool stops_time = s.time_locked > 0 || s.zero_time_forever > 0;
     const std::vector<tioa::Word>& witness = late ? s.worst_start : s.time_lock_start;
+    if ((late || stops_time) && witness.empty())
+      throw std::logic_error("lemma-7.3: the symbolic computation found no start state for "
+                             "what it found");
     if (!witness.empty()) {
       const StateList one{layer.words(), witness};
       PropertyResult m = checker::check_stabilisation(
@@ -120,8 +125,12 @@ PropertyResult check_symbolically(const VlConfig& c, MWindow window, const Arbit
       r.message += ", from every start state";
     }
   }
-  r.figures.emplace_back("covered", "every start state of " + std::string(u_layer_name) + ": " +
-                                        scientific(s.start_states) + " (symbolic)");
+  r.figures.emplace_back("covered", s.stopped
+                                        ? "none decided: the symbolic computation of " +
+                                              scientific(s.start_states) +
+                                              " start states stopped at the time limit"
+                                        : "every start state of " + std::string(u_layer_name) +
+                                              ": " + scientific(s.start_states) + " (symbolic)");
   r.figures.emplace_back("symbolic", figure);
   r.coverage = coverage;
   return finish(std::move(r), c, starts, layer);

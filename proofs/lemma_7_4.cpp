@@ -71,6 +71,9 @@ PropertyResult check_lemma_7_4(const VlConfig& c, MWindow window, const Arbitrar
   r.notes.push_back(lmc_measure_note);
   r.notes.push_back(faults_note(starts.faults, c.dr_rule));
   r.notes.push_back(junk_note(starts.junk));
+  if (starts.symbolic)
+    r.notes.push_back("starts=all decides lemma-7.3 only (symbolically); this property drew "
+                      "its start states as with starts=sampled");
   // Its trace is one of u.layer, which has junk slots (D31).
   r.trace_system = std::make_shared<const tioa::Automaton>(u.layer);
   r.trace_system_name = u_layer_name;
