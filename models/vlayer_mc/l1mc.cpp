@@ -167,6 +167,7 @@ std::vector<tioa::StatePredicate> l1mc_conjuncts(const VlConfig& config,
             in = false;
             return false;
           },
+          // (index -1: any VN, as the walk asks before it reads RW.now for clause (2))
           [&](const char* c, BrokenNode n) {
             return std::string_view(c) == clause && n.vn == node.vn &&
                    (n.index == node.index || n.index < 0);
