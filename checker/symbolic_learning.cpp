@@ -138,11 +138,10 @@ StepRelation learn_action(const Space& space, std::size_t action, LearningFigure
   const Run run = [&](Word* state, Word* trace, std::vector<Outcome>& outcomes) {
     const tioa::State from(state, 0, trace, space.words());
     tioa::for_each_candidate(sig, t, from, [&](const tioa::Params& p) {
-      if (!t.enabled(from, p)) {
-        if (sig.kind == tioa::ActionKind::input)
-          tioa::throw_input_not_enabled(sig, p);
+      // (An input not enabled is the explicit explorer's error to report: here the state
+      // may be a partial one, whose placeholders decide nothing.)
+      if (!t.enabled(from, p))
         return;
-      }
       const std::uint32_t choices = t.choice_count(from, p);
       for (std::uint32_t c = 0; c < choices; ++c) {
         Outcome o = start_outcome(space, state);
