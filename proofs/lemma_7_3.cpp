@@ -111,6 +111,7 @@ PropertyResult check_symbolically(const VlConfig& c, MWindow window, const Arbit
                     scientific(s.time_locked) + " reachable states are time-locked and " +
                     scientific(s.zero_time_forever) + " can take zero-time steps for ever";
       }
+      r.seconds += run.seconds; // (the symbolic part, then the explicit run)
       r.notes.push_back("the trace: explored explicitly from the start state the symbolic "
                         "computation picked (one of those with the latest time outside L1MC)");
     } else {
