@@ -3,7 +3,6 @@
 #include <functional>
 #include <utility>
 
-#include "tioa/action_footprints.hpp"
 #include "tioa/candidates.hpp"
 #include "tioa/errors.hpp"
 
@@ -129,11 +128,11 @@ bdd StepRelation::preimage(const bdd& set) const {
   return bdd_relprod(relation_, bdd_replace(set, to_next_), written_next_);
 }
 
-StepRelation learn_action(const Space& space, std::size_t action, LearningFigures& figures) {
+StepRelation learn_action(const Space& space, std::size_t action, std::vector<Word> writes,
+                          LearningFigures& figures) {
   const tioa::Automaton& a = space.automaton();
   const tioa::Transition& t = a.transitions()[action];
   const tioa::ActionSignature& sig = a.actions()[action];
-  std::vector<Word> writes = tioa::action_footprints(a)[action].writes;
   writes.resize(space.words(), 0);
   const Run run = [&](Word* state, Word* trace, std::vector<Outcome>& outcomes) {
     const tioa::State from(state, 0, trace, space.words());

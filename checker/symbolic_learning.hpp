@@ -54,8 +54,10 @@ struct LearningFigures {
 };
 
 // Every step of `action` (every parameter value of its box that its binders and filters
-// admit, every choice), with the writes its footprint declares (tioa/action_footprints.hpp).
-StepRelation learn_action(const Space& space, std::size_t action, LearningFigures& figures);
+// admit, every choice); `writes`: what its footprint declares it may write
+// (tioa/action_footprints.hpp).
+StepRelation learn_action(const Space& space, std::size_t action, std::vector<Word> writes,
+                          LearningFigures& figures);
 // One tick: the conjunction over the trajectory parts of "this part does not stop time, and
 // evolves" (the parts write disjoint bits: each its own automaton's state).
 StepRelation learn_tick(const Space& space, LearningFigures& figures);

@@ -1,13 +1,16 @@
 #include "checker/symbolic_system.hpp"
 
+#include "tioa/action_footprints.hpp"
+
 namespace checker::symbolic {
 
 namespace {
 
 std::vector<StepRelation> learn_actions(const Space& space, LearningFigures& figures) {
+  std::vector<tioa::ActionFootprint> footprints = tioa::action_footprints(space.automaton());
   std::vector<StepRelation> actions;
-  for (std::size_t a = 0; a < space.automaton().actions().size(); ++a)
-    actions.push_back(learn_action(space, a, figures));
+  for (std::size_t a = 0; a < footprints.size(); ++a)
+    actions.push_back(learn_action(space, a, std::move(footprints[a].writes), figures));
   return actions;
 }
 
