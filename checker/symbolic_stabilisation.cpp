@@ -12,8 +12,7 @@ std::vector<Word> start_through_layers(const System& system, const std::vector<b
                                        const bdd& start, bdd target, std::size_t k) {
   // Each layer is closed under zero-time steps, so the way back stays inside it.
   for (; k > 0; --k)
-    target =
-        system.tick().preimage(system.back_zero_time_closure(target, layers[k])) & layers[k - 1];
+    target = system.tick_preimage(system.back_zero_time_closure(target, layers[k]), layers[k - 1]);
   const bdd starts = system.back_zero_time_closure(target, layers[0]) & start;
   return starts == bddfalse ? std::vector<Word>{} : system.space().pick(starts);
 }
@@ -34,7 +33,7 @@ void run_layers(const System& system, const bdd& start, const bdd& legal,
       r.worst = k;
       break;
     }
-    const bdd next = system.zero_time_closure(system.tick().image(layers[k]));
+    const bdd next = system.zero_time_closure(system.tick_image(layers[k]));
     const auto seen = std::find(layers.begin(), layers.end(), next);
     if (seen != layers.end()) {
       period_start = static_cast<std::size_t>(seen - layers.begin());
@@ -79,7 +78,7 @@ StabilisationResult stabilise(const System& system, const bdd& start, const bdd&
   StabilisationResult r;
   r.start_states = system.space().count(start);
   try {
-    run_layers(system, start, legal, witness_after, r);
+    run_layers(system, start, legal | system.settled(), witness_after, r);
   } catch (const Stopped&) {
     r.stopped = true;
   }

@@ -41,8 +41,9 @@ struct StabilisationResult {
   bool stopped = false;               // out of time: the figures are not complete
 };
 
-// `start` and `legal` are sets of `system`'s space. A stop the system was given (set_stop)
-// ends it with `stopped`. Timed automata only (time is counted in ticks):
+// `start` and `legal` are sets of `system`'s space; the system's settled states (set_settled)
+// count as in L and are not expanded, as check_stabilisation's `settled` are. A stop the system was
+// given (set_stop) ends it with `stopped`. Timed automata only (time is counted in ticks):
 // std::invalid_argument otherwise.
 StabilisationResult stabilise(const System& system, const bdd& start, const bdd& legal,
                               std::uint64_t witness_after);

@@ -22,10 +22,14 @@ System::System(const Space& space, LearningFigures& figures)
 
 // Chained over the groups, each applied to the states not yet expanded (the frontier), which
 // grows as the groups before it add states: a group's images reach the next group at once.
+// Settled states take no step: they are never a step's source (their own tick leads back to
+// them, nothing new).
 bdd System::closure(const bdd& set, bool with_tick, bool backward, const bdd& within) const {
   bdd all = set, frontier = set;
+  const bdd moving = within & !settled_;
   const auto apply = [&](const StepRelation& step) {
-    const bdd fresh = (backward ? step.preimage(frontier) : step.image(frontier)) & within & !all;
+    const bdd fresh = backward ? step.preimage(frontier) & moving & !all
+                               : step.image(frontier & !settled_) & within & !all;
     all |= fresh;
     frontier |= fresh;
     return fresh;
@@ -56,13 +60,21 @@ bdd System::back_reach(const bdd& set) const {
   return closure(set, true, true, bddtrue);
 }
 
+bdd System::tick_image(const bdd& set) const {
+  return tick_.image(set & !settled_) | (set & settled_);
+}
+
+bdd System::tick_preimage(const bdd& set, const bdd& within) const {
+  return ((tick_.preimage(set) & !settled_) | (set & settled_)) & within;
+}
+
 bdd System::time_locks(const bdd& within) const {
-  return within & !back_zero_time_closure(tick_.enabled(), bddtrue);
+  return within & !back_zero_time_closure(tick_.enabled() | settled_, bddtrue);
 }
 
 bdd System::zero_time_forever(const bdd& within) const {
   // The greatest set of states of `within` that each have a zero-time step into it.
-  bdd keep = within, before;
+  bdd keep = within & !settled_, before;
   do {
     if (stop_ && stop_())
       throw Stopped{};

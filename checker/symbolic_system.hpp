@@ -22,6 +22,15 @@ public:
   const StepRelation& tick() const { return tick_; }
   // Asked at every round of every fixpoint; when it says true, the fixpoint throws Stopped.
   void set_stop(std::function<bool()> stop) { stop_ = std::move(stop); }
+  // States known to stay in the legal set for good (check_stabilisation's `settled`): they
+  // take no step, and time passes in them (one tick leads back to the same state). None
+  // unless set.
+  void set_settled(bdd settled) { settled_ = std::move(settled); }
+  const bdd& settled() const { return settled_; }
+
+  // One tick from `set`, and the states of `within` one tick leads into `set`.
+  bdd tick_image(const bdd& set) const;
+  bdd tick_preimage(const bdd& set, const bdd& within) const;
 
   // `set` and every state its zero-time steps lead to (for an untimed automaton: every step).
   bdd zero_time_closure(const bdd& set) const;
@@ -43,6 +52,7 @@ private:
   std::vector<StepRelation> zero_time_;
   StepRelation tick_;
   std::function<bool()> stop_;
+  bdd settled_ = bddfalse;
 };
 
 } // namespace checker::symbolic

@@ -45,14 +45,22 @@ struct BothWays {
   Verdict verdict = Verdict::incomplete;
 };
 
-BothWays stabilise_both_ways(const tioa::Automaton& a, const tioa::StatePredicate& legal) {
+// With `settled` given, both count its states in L and expand none of them.
+BothWays stabilise_both_ways(const tioa::Automaton& a, const tioa::StatePredicate& legal,
+                             const tioa::StatePredicate& settled = {}) {
   BothWays both;
+  const auto explicit_check = [&](const tioa::Automaton& from) {
+    return settled ? check_stabilisation(from, legal, settled, {})
+                   : check_stabilisation(from, legal, {});
+  };
   {
     const sym::BddSession session(a.layout().bits());
     const sym::Space space(a);
     sym::LearningFigures figures;
-    const sym::System system(space, figures);
+    sym::System system(space, figures);
     sym::LearningFigures predicate;
+    if (settled)
+      system.set_settled(sym::learn_predicate(space, settled, predicate));
     const bdd in_legal = sym::learn_predicate(space, legal, predicate);
     const sym::StabilisationResult r = sym::stabilise(system, space.valid(), in_legal, 0);
     CHECK(r.start_states == space.count(space.valid()));
@@ -64,10 +72,10 @@ BothWays stabilise_both_ways(const tioa::Automaton& a, const tioa::StatePredicat
       REQUIRE_FALSE(r.worst_start.empty());
       const tioa::Automaton from_it = tioa::Start(
           a, tioa::StartSet::listed(a.layout().bits(), a.words(), r.worst_start, "picked"));
-      CHECK(check_stabilisation(from_it, legal, {}).worst_time == r.worst);
+      CHECK(explicit_check(from_it).worst_time == r.worst);
     }
   }
-  const PropertyResult r = check_stabilisation(a, legal, {});
+  const PropertyResult r = explicit_check(a);
   both.explicit_worst = r.worst_time;
   both.verdict = r.verdict;
   return both;
@@ -117,6 +125,21 @@ TEST_CASE("symbolic: the worst time from every start state, as check_stabilisati
     const tioa::Automaton c = timed_countdown(3, true);
     const BothWays both = stabilise_both_ways(c, variable_is(c, "x", 0));
     CHECK(both.zero_time_forever > 0);
+  }
+  SECTION("settled states count as in L from the time they are entered") {
+    const tioa::Automaton c = timed_countdown(6);
+    const BothWays both = stabilise_both_ways(c, variable_is(c, "x", 0), variable_is(c, "x", 2));
+    CHECK(both.symbolic == 4u);
+    CHECK(both.explicit_worst == 4u);
+  }
+  SECTION("Fischer from every valuation, with settled states") {
+    const fischer::Fischer f = fischer::build(3, 1, 2);
+    const tioa::Automaton u = tioa::U(f.system);
+    const BothWays both = stabilise_both_ways(u, f.at_most_one_in_cs, variable_is(u, "loc[1]", 0));
+    if (both.explicit_worst)
+      CHECK(both.symbolic == both.explicit_worst);
+    else
+      CHECK_FALSE(both.symbolic);
   }
   SECTION("Fischer from every valuation: mutual exclusion") {
     const fischer::Fischer f = fischer::build(2, 1, 2);
