@@ -33,4 +33,11 @@ tioa::StatePredicate reset_mc(const VlConfig& config, const tioa::Automaton& lay
 tioa::StatePredicate reset_mc_or_targetless(const VlConfig& config, const tioa::Automaton& layer,
                                             MWindow window = MWindow::as_printed);
 
+// The same as a conjunction: L1MC's conjuncts (l1mc_conjuncts), then one per client (its
+// clause (2) or D30's exception), one per VSA (3), one per VBcast pending flag (4) and (5).
+// Each reads only what its clause reads; the symbolic checks build the set from them.
+std::vector<tioa::StatePredicate>
+reset_mc_or_targetless_conjuncts(const VlConfig& config, const tioa::Automaton& layer,
+                                 MWindow window = MWindow::as_printed);
+
 } // namespace vlayer_mc

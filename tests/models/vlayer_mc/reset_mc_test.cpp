@@ -1,5 +1,8 @@
 // ResetMC (seed 000 Definition 7.2) on hand-made states of VLayer[MC], clause by clause,
 // and the reset states among the reachable states of the smallest instance.
+#include <algorithm>
+#include <random>
+
 #include <catch2/catch.hpp>
 
 #include "checker/checks.hpp"
@@ -173,4 +176,47 @@ TEST_CASE("vlayer ResetMC: finding F6, never ResetMC again under a failed VSA", 
   }
   CHECK(resets == 4);     // VW.age[0], VW.age[1] each 0 or 1
   CHECK(targetless == 4); // at the later round starts, before and after the time updates
+}
+
+// The symbolic checks build ResetMC-or-targetless from its conjuncts: on 5,000 of the first
+// 200,000 states reachable from the placed start of the default instance, and on each of them with
+// one variable at a random code, their conjunction is reset_mc_or_targetless.
+TEST_CASE("vlayer ResetMC: the conjuncts together are reset_mc_or_targetless", "[vlayer]") {
+  const vlayer_mc::VlConfig c;
+  const auto layer = vlayer_mc::vlayer(c, {.robots = true, .vsas = true});
+  const vlayer_mc::Lattice l = c.lattice();
+  const tioa::Automaton placed =
+      tioa::Start(layer, vlayer_mc::placed_start(layer, {l.point(1, 1)}));
+  const tioa::SuccessorGenerator generator(placed);
+  checker::ExploreOptions first;
+  first.limits.max_states = 200'000; // (the first levels are enough)
+  const checker::Exploration ex = checker::explore(generator, placed.start(), first);
+  std::mt19937_64 random(11);
+  const auto& variables = layer.layout().variables();
+  for (const auto window : {vlayer_mc::MWindow::as_printed, vlayer_mc::MWindow::closed}) {
+    const auto whole = vlayer_mc::reset_mc_or_targetless(c, layer, window);
+    const auto conjuncts = vlayer_mc::reset_mc_or_targetless_conjuncts(c, layer, window);
+    int inside = 0, outside = 0;
+    checker::StateReader read(ex);
+    const std::uint64_t stride = std::max<std::uint64_t>(1, ex.store.size() / 5000);
+    for (checker::StateId id = 0; id < ex.store.size(); id += stride) {
+      for (int mutated = 0; mutated < 2; ++mutated) {
+        Words s(read(id), read(id) + layer.words());
+        s.push_back(0);
+        tioa::State state(s.data(), 0);
+        if (mutated) {
+          const auto& v = variables[random() % variables.size()];
+          state.set_code(v.slot(), std::uniform_int_distribution<std::uint64_t>(0, v.code_count() -
+                                                                                       1)(random));
+        }
+        const bool all = std::all_of(conjuncts.begin(), conjuncts.end(),
+                                     [&](const tioa::StatePredicate& p) { return p(state); });
+        const bool in = whole(state);
+        CHECK(in == all);
+        (in ? inside : outside) += 1;
+      }
+    }
+    CHECK(inside > 0);
+    CHECK(outside > 0);
+  }
 }
