@@ -11,6 +11,8 @@
 #include "proofs/vlayer_mc/known_lmc.hpp"
 #include "proofs/vlayer_mc/legal_sets.hpp"
 #include "proofs/vlayer_mc/stabilisation_common.hpp"
+#include "proofs/vlayer_mc/symbolic_starts.hpp"
+#include "proofs/vlayer_mc/symbolic_verdict.hpp"
 #include "tioa/operators.hpp"
 
 namespace vlayer_mc {
@@ -24,10 +26,55 @@ tioa::Automaton placed_instance(const VlConfig& c, const tioa::Automaton& layer)
   return tioa::Start(layer, placed_start(layer, start_points(c)));
 }
 
+// The notes and trace system every Lemma 7.4 result carries; its trace is one of `layer`,
+// which has junk slots (D31).
+PropertyResult finish_7_4(PropertyResult r, const VlConfig& c, const ArbitraryStarts& starts,
+                          const tioa::Automaton& layer, const KnownLmc& known) {
+  r.figures.emplace_back("known LMC", describe_known(known));
+  r.notes.push_back(lmc_measure_note);
+  r.notes.push_back(faults_note(starts.faults, c.dr_rule));
+  r.notes.push_back(junk_note(starts.junk));
+  r.trace_system = std::make_shared<const tioa::Automaton>(layer);
+  r.trace_system_name = u_layer_name;
+  note_repairs(c, r);
+  note_round_length(c, r);
+  return r;
+}
+
+// From every L1MC state at once (symbolic_verdict.hpp): L1MC is every start state of
+// U(VLNodes) || R(env) in it.
+PropertyResult lemma_7_4_symbolically(const VlConfig& c, MWindow window,
+                                      const ArbitraryStarts& starts,
+                                      const checker::ExploreOptions& options) {
+  const tioa::Automaton layer = u_layer(c, starts);
+  const KnownLmc known(c, layer, options);
+  const tioa::StatePredicate reset = reset_mc_or_targetless(c, layer, window);
+  const tioa::StatePredicate in_lmc = [&](const tioa::State& s) {
+    return reset(s) || known.contains(s);
+  };
+  const std::uint64_t bound = static_cast<std::uint64_t>(c.delta + c.d + c.e);
+  SymbolicU u(c, starts, layer, options.limits);
+  const bdd lmc =
+      u.conjunction(reset_mc_or_targetless_conjuncts(c, layer, window)) | u.known_lmc(known);
+  const bdd l1 = u.start() & u.conjunction(l1mc_conjuncts(c, layer, window));
+  const SymbolicRun run = u.stabilise(l1, lmc, lmc, bound);
+  const SymbolicClaim claim{"Lemma 7.4 (from L1MC, in LMC from delta + d + e on)",
+                            bound,
+                            false,
+                            known.complete(),
+                            "L1MC (Def 7.1)",
+                            in_lmc,
+                            in_lmc,
+                            {}};
+  return finish_7_4(judge_symbolic(run, layer, claim, options), c, starts, layer, known);
+}
+
 } // namespace
 
 PropertyResult check_lemma_7_4(const VlConfig& c, MWindow window, const ArbitraryStarts& starts,
                                const checker::ExploreOptions& options) {
+  if (starts.symbolic)
+    return lemma_7_4_symbolically(c, window, starts, options);
   const UStarts u = u_starts(c, starts, options);
   const tioa::StatePredicate in_l1mc = l1mc(c, u.layer, window);
   bool complete = true;
@@ -61,25 +108,13 @@ PropertyResult check_lemma_7_4(const VlConfig& c, MWindow window, const Arbitrar
                           " start states of U(VLNodes) || R(env), " + u.coverage.chosen};
   if (all)
     r.coverage.of = covered;
-  r.figures.emplace_back("known LMC", describe_known(known));
   r.figures.emplace_back(
       "covered", "the " + std::to_string(from_instance) + " L1MC states reachable from " +
                      placed_instance(c, u.layer).start().description() + " and the " +
                      std::to_string(arbitrary.size()) + " L1MC states reached from " + u.covered +
                      " (duplicates counted once by the exploration), not all of L1MC: its " +
                      "valuations are too many to enumerate");
-  r.notes.push_back(lmc_measure_note);
-  r.notes.push_back(faults_note(starts.faults, c.dr_rule));
-  r.notes.push_back(junk_note(starts.junk));
-  if (starts.symbolic)
-    r.notes.push_back("starts=all decides lemma-7.3 only (symbolically); this property drew "
-                      "its start states as with starts=sampled");
-  // Its trace is one of u.layer, which has junk slots (D31).
-  r.trace_system = std::make_shared<const tioa::Automaton>(u.layer);
-  r.trace_system_name = u_layer_name;
-  note_repairs(c, r);
-  note_round_length(c, r);
-  return r;
+  return finish_7_4(std::move(r), c, starts, u.layer, known);
 }
 
 } // namespace vlayer_mc

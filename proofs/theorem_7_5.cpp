@@ -1,7 +1,9 @@
 #include "proofs/theorem_7_5.hpp"
 
 #include <cstdint>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "checker/checks.hpp"
@@ -9,6 +11,8 @@
 #include "proofs/vlayer_mc/known_lmc.hpp"
 #include "proofs/vlayer_mc/legal_sets.hpp"
 #include "proofs/vlayer_mc/stabilisation_common.hpp"
+#include "proofs/vlayer_mc/symbolic_starts.hpp"
+#include "proofs/vlayer_mc/symbolic_verdict.hpp"
 #include "tioa/operators.hpp"
 
 namespace vlayer_mc {
@@ -18,10 +22,97 @@ namespace {
 using checker::PropertyResult;
 using checker::Verdict;
 
+// The three measurements of Theorem 7.5: start -> L1MC (t1), L1MC -> LMC (t2), start -> LMC
+// (t, judged), each a worst time or (none) a verdict.
+struct Times {
+  std::optional<std::uint64_t> t1, t2;
+  std::string t1_text, t2_text;
+};
+
+std::string time_of(const std::optional<std::uint64_t>& worst, Verdict verdict) {
+  return worst ? std::to_string(*worst) : std::string(checker::to_string(verdict));
+}
+
+// Lemma 3.4's composition (t <= t1 + t2), the three figures, and the notes and trace system
+// every Theorem 7.5 result carries.
+PropertyResult finish_7_5(PropertyResult r, const Times& times, const VlConfig& c,
+                          const ArbitraryStarts& starts, const tioa::Automaton& layer,
+                          const KnownLmc& known) {
+  const std::string t = time_of(r.worst_time, r.verdict);
+  r.figures.emplace_back("t1 (start -> L1MC, Lemma 7.3)", times.t1_text);
+  r.figures.emplace_back("t2 (L1MC -> LMC, Lemma 7.4)", times.t2_text);
+  r.figures.emplace_back("t (start -> LMC, direct)", t);
+  if (times.t1 && times.t2 && r.worst_time && *r.worst_time > *times.t1 + *times.t2) {
+    r.verdict = Verdict::violated;
+    r.message = "Lemma 3.4 fails: start -> LMC takes " + t +
+                " but t1 + t2 = " + std::to_string(*times.t1 + *times.t2);
+  } else if (times.t1 && times.t2) {
+    r.notes.push_back("Lemma 3.4: t = " + t +
+                      " <= t1 + t2 = " + std::to_string(*times.t1 + *times.t2));
+  }
+  r.figures.emplace_back("known LMC", describe_known(known));
+  r.notes.push_back(lmc_measure_note);
+  r.notes.push_back(faults_note(starts.faults, c.dr_rule));
+  r.notes.push_back(junk_note(starts.junk));
+  // Its trace is one of `layer`, which has junk slots (D31).
+  r.trace_system = std::make_shared<const tioa::Automaton>(layer);
+  r.trace_system_name = u_layer_name;
+  note_repairs(c, r);
+  note_round_length(c, r);
+  return r;
+}
+
+// Every start state at once (symbolic_verdict.hpp): t1 and t2 from every start state and
+// every L1MC state, t judged.
+PropertyResult theorem_7_5_symbolically(const VlConfig& c, MWindow window,
+                                        const ArbitraryStarts& starts,
+                                        const checker::ExploreOptions& options) {
+  const tioa::Automaton layer = u_layer(c, starts);
+  const KnownLmc known(c, layer, options);
+  const tioa::StatePredicate reset = reset_mc_or_targetless(c, layer, window);
+  const tioa::StatePredicate in_lmc = [&](const tioa::State& s) {
+    return reset(s) || known.contains(s);
+  };
+  const std::uint64_t bound = static_cast<std::uint64_t>(c.delta + c.d + c.e + c.eps_sample);
+  const std::uint64_t no_witness = std::numeric_limits<std::uint64_t>::max();
+  SymbolicU u(c, starts, layer, options.limits);
+  const bdd l1 = u.conjunction(l1mc_conjuncts(c, layer, window));
+  const bdd lmc =
+      u.conjunction(reset_mc_or_targetless_conjuncts(c, layer, window)) | u.known_lmc(known);
+  const auto text = [](const SymbolicRun& run) {
+    return run.result.stopped ? std::string("stopped")
+                              : time_of(run.result.worst, Verdict::incomplete);
+  };
+  Times times;
+  const SymbolicRun first = u.stabilise(u.start(), l1, bddfalse, no_witness);
+  times.t1 = first.result.worst;
+  times.t1_text = text(first);
+  const SymbolicRun second = u.stabilise(u.start() & l1, lmc, lmc, no_witness);
+  times.t2 = second.result.worst;
+  times.t2_text = text(second);
+  const SymbolicRun direct = u.stabilise(u.start(), lmc, lmc, bound);
+  const SymbolicClaim claim{"Theorem 7.5 (in LMC from delta + d + e + eps_sample on)",
+                            bound,
+                            false,
+                            known.complete(),
+                            u_layer_name,
+                            in_lmc,
+                            in_lmc,
+                            {}};
+  PropertyResult r = judge_symbolic(direct, layer, claim, options);
+  r.notes.push_back("t1 and t2 are worst times from every start state and from every L1MC "
+                    "state (Lemmas 7.3 and 7.4), decided symbolically" +
+                    std::string(first.result.worst ? "" : "; t1 none: outside L1MC for ever") +
+                    std::string(second.result.worst ? "" : "; t2 none: outside LMC for ever"));
+  return finish_7_5(std::move(r), times, c, starts, layer, known);
+}
+
 } // namespace
 
 PropertyResult check_theorem_7_5(const VlConfig& c, MWindow window, const ArbitraryStarts& starts,
                                  const checker::ExploreOptions& options) {
+  if (starts.symbolic)
+    return theorem_7_5_symbolically(c, window, starts, options);
   const UStarts u = u_starts(c, starts, options);
   const tioa::Automaton system =
       tioa::Start(u.layer, u.states.start(u.layer, "U(VLNodes) || R(RW || VW || VBcast)"));
@@ -42,40 +133,14 @@ PropertyResult check_theorem_7_5(const VlConfig& c, MWindow window, const Arbitr
   const std::uint64_t bound = static_cast<std::uint64_t>(c.delta + c.d + c.e + c.eps_sample);
   PropertyResult r = judge(direct, bound, "Theorem 7.5 (in LMC from delta + d + e + eps_sample on)",
                            u.exhaustive && complete && known.complete(), false, "");
-  const auto time_of = [](const PropertyResult& p) {
-    return p.worst_time ? std::to_string(*p.worst_time)
-                        : std::string(checker::to_string(p.verdict));
-  };
-  r.figures.emplace_back("t1 (start -> L1MC, Lemma 7.3)", time_of(first));
-  r.figures.emplace_back("t2 (L1MC -> LMC, Lemma 7.4)", time_of(second));
-  r.figures.emplace_back("t (start -> LMC, direct)", time_of(direct));
   r.figures.emplace_back("covered", u.covered);
   r.coverage = u.coverage;
-  if (first.worst_time && second.worst_time && direct.worst_time &&
-      *direct.worst_time > *first.worst_time + *second.worst_time) {
-    r.verdict = Verdict::violated;
-    r.message = "Lemma 3.4 fails: start -> LMC takes " + time_of(direct) +
-                " but t1 + t2 = " + std::to_string(*first.worst_time + *second.worst_time);
-  } else if (first.worst_time && second.worst_time) {
-    r.notes.push_back("Lemma 3.4: t = " + time_of(direct) +
-                      " <= t1 + t2 = " + std::to_string(*first.worst_time + *second.worst_time));
-  }
   r.states = first.states + second.states + direct.states;
   r.edges = first.edges + second.edges + direct.edges;
   r.seconds = first.seconds + second.seconds + direct.seconds;
-  r.figures.emplace_back("known LMC", describe_known(known));
-  r.notes.push_back(lmc_measure_note);
-  r.notes.push_back(faults_note(starts.faults, c.dr_rule));
-  r.notes.push_back(junk_note(starts.junk));
-  if (starts.symbolic)
-    r.notes.push_back("starts=all decides lemma-7.3 only (symbolically); this property drew "
-                      "its start states as with starts=sampled");
-  // Its trace is one of u.layer, which has junk slots (D31).
-  r.trace_system = std::make_shared<const tioa::Automaton>(u.layer);
-  r.trace_system_name = u_layer_name;
-  note_repairs(c, r);
-  note_round_length(c, r);
-  return r;
+  const Times times{first.worst_time, second.worst_time, time_of(first.worst_time, first.verdict),
+                    time_of(second.worst_time, second.verdict)};
+  return finish_7_5(std::move(r), times, c, starts, u.layer, known);
 }
 
 } // namespace vlayer_mc

@@ -14,23 +14,25 @@ using tioa::Word;
 KnownLmc::KnownLmc(const VlConfig& c, const tioa::Automaton& layer,
                    const checker::ExploreOptions& o, const tioa::StatePredicate& stop_at)
     : words_(layer.words()) {
-  for (int p = 0; p < c.robots; ++p)
-    nodes_.push_back(node(layer, names::cn_name(p) + "."));
-  for (int u = 0; u < c.lattice().regions(); ++u)
-    nodes_.push_back(node(layer, names::vn_name(u) + "."));
   const auto slot = [&](const std::string& name) { return need_slot(layer, name, "LMC"); };
   const auto guarded = [&](const std::string& guard, std::vector<std::string> rest) {
-    Guarded g{slot(guard), {}};
+    Forgetting g{Forgetting::When::slot_empty, slot(guard), {}, {}};
     for (const auto& name : rest)
       g.rest.emplace_back(slot(name), layer.layout().find(name)->initial_code.value_or(0));
-    slots_.push_back(std::move(g));
+    forgetting_.push_back(std::move(g));
   };
   const auto at = [](const std::string& name, int i) {
     return name + "[" + std::to_string(i) + "]";
   };
   const int robots = c.robots, regions = c.lattice().regions();
+  // RW.vel(p) = ⊥ and "steer to the point it stands on" move the robot exactly as 0 does
+  // (D8, D27), and every velocity output overwrites them.
   for (int p = 0; p < robots; ++p) {
-    velocities_.emplace_back(slot(at("RW.vel", p)), slot(at("RW.loc", p)));
+    const tioa::Slot vel = slot(at("RW.vel", p));
+    forgetting_.push_back(
+        {Forgetting::When::velocity_moves_nowhere, vel, slot(at("RW.loc", p)), {{vel, 0}}});
+  }
+  for (int p = 0; p < robots; ++p) {
     const std::string cn = names::cn_name(p) + ".delay.";
     guarded(cn + "held", {cn + "age", cn + "loc"});
     guarded(at("VBcast.cn_pending", p), {at("VBcast.cn_age", p), at("VBcast.cn_loc", p)});
@@ -50,12 +52,17 @@ KnownLmc::KnownLmc(const VlConfig& c, const tioa::Automaton& layer,
     guarded(at("VBcast.junk_to", i),
             {at("VBcast.junk_kind", i), at("VBcast.junk_id", i), at("VBcast.junk_value", i),
              at("VBcast.junk_from", i), at("VBcast.junk_age", i)});
+  for (int p = 0; p < c.robots; ++p)
+    forgetting_.push_back(node(layer, names::cn_name(p) + "."));
+  for (int u = 0; u < c.lattice().regions(); ++u)
+    forgetting_.push_back(node(layer, names::vn_name(u) + "."));
+  std::vector<tioa::Slot> failed;
+  for (const Forgetting& f : forgetting_)
+    if (f.when == Forgetting::When::node_failed)
+      failed.push_back(f.guard);
   // Built state by state as the explorer takes them (its limits hold there), never whole.
   const tioa::StartSet reset = reset_family(c, layer);
-  std::vector<tioa::Slot> failed;
-  for (const Node& n : nodes_)
-    failed.push_back(n.failed);
-  family_size_ = reset_family_size(c) << nodes_.size();
+  family_size_ = reset_family_size(c) << failed.size();
   family_ = tioa::StartSet(
       "the reset family with every combination of failed nodes",
       [reset, failed](Word* dst, std::uint32_t base, const tioa::StartSet::Visit& visit) {
@@ -99,29 +106,32 @@ std::vector<Word> KnownLmc::representative(const tioa::State& s) const {
   return copy;
 }
 
-KnownLmc::Node KnownLmc::node(const tioa::Automaton& layer, const std::string& prefix) {
-  Node n{need_slot(layer, prefix + "failed", "LMC"), {}};
+KnownLmc::Forgetting KnownLmc::node(const tioa::Automaton& layer, const std::string& prefix) {
+  Forgetting n{Forgetting::When::node_failed, need_slot(layer, prefix + "failed", "LMC"), {}, {}};
   for (const auto& v : layer.layout().variables())
     if (v.name.rfind(prefix, 0) == 0 && v.name != prefix + "failed")
       n.rest.emplace_back(v.slot(), v.initial_code.value_or(0));
   return n;
 }
 
-void KnownLmc::canonical(tioa::State& s) const {
-  // RW.vel(p) = ⊥ and "steer to the point it stands on" move the robot exactly as 0 does
-  // (D8, D27), and every velocity output overwrites them.
-  for (const auto& [vel, loc] : velocities_) {
-    const std::uint64_t code = s.code(vel);
-    if (code == vel.value_codes || code == s.code(loc) + 1) // ⊥, or the point of loc
-      s.set_code(vel, 0);                                   // zero_velocity
+bool KnownLmc::Forgetting::applies(const tioa::State& s) const {
+  switch (when) {
+  case When::velocity_moves_nowhere: {
+    const std::uint64_t code = s.code(guard);
+    return code == guard.value_codes || code == s.code(loc) + 1; // ⊥, or the point of loc
   }
-  for (const Guarded& g : slots_)
-    if (s.code(g.guard) == 0)
-      for (const auto& [slot, code] : g.rest)
-        s.set_code(slot, code);
-  for (const Node& n : nodes_)
-    if (s.code(n.failed) != 0)
-      for (const auto& [slot, code] : n.rest)
+  case When::slot_empty:
+    return s.code(guard) == 0;
+  case When::node_failed:
+    return s.code(guard) != 0;
+  }
+  return false;
+}
+
+void KnownLmc::canonical(tioa::State& s) const {
+  for (const Forgetting& f : forgetting_)
+    if (f.applies(s))
+      for (const auto& [slot, code] : f.rest)
         s.set_code(slot, code);
 }
 

@@ -42,23 +42,29 @@ public:
   // The representative of `s`'s class: `s` with what nothing reads again reset.
   std::vector<tioa::Word> representative(const tioa::State& s) const;
 
-private:
-  struct Node {
-    tioa::Slot failed;
+  // One part of the comparison: where `applies` holds of a state, `rest` is read no more,
+  // and the representative has its initial codes there.
+  struct Forgetting {
+    enum class When {
+      velocity_moves_nowhere, // `guard` is RW.vel[p], `loc` RW.loc[p]
+      slot_empty,             // `guard` is a slot's pending or held flag
+      node_failed             // `guard` is a node's failed flag
+    };
+    When when;
+    tioa::Slot guard, loc;
     std::vector<std::pair<tioa::Slot, std::uint64_t>> rest; // with its initial code
+    bool applies(const tioa::State& s) const;
   };
-  struct Guarded { // `rest` is read only while `guard` is nonzero
-    tioa::Slot guard;
-    std::vector<std::pair<tioa::Slot, std::uint64_t>> rest;
-  };
+  // The parts, in the order the representative applies them (a later part sees what the
+  // earlier ones set).
+  const std::vector<Forgetting>& forgetting() const { return forgetting_; }
 
-  static Node node(const tioa::Automaton& layer, const std::string& prefix);
+private:
+  static Forgetting node(const tioa::Automaton& layer, const std::string& prefix);
   void canonical(tioa::State& s) const;
 
   std::uint32_t words_;
-  std::vector<Node> nodes_;
-  std::vector<Guarded> slots_;
-  std::vector<std::pair<tioa::Slot, tioa::Slot>> velocities_; // RW.vel[p], RW.loc[p]
+  std::vector<Forgetting> forgetting_;
   tioa::StartSet family_; // lazy: each state built as it is enumerated
   std::uint64_t family_size_ = 0;
   std::shared_ptr<checker::Exploration> ex_;

@@ -1,48 +1,81 @@
 #include "proofs/vlayer_mc/symbolic_starts.hpp"
 
 #include <algorithm>
-#include <chrono>
+
+#include "proofs/vlayer_mc/symbolic_lmc.hpp"
 
 namespace vlayer_mc {
 
-SymbolicRun stabilise_from_u(const VlConfig& config, const ArbitraryStarts& starts,
-                             const tioa::Automaton& layer,
-                             const std::vector<tioa::StatePredicate>& legal,
-                             std::uint64_t witness_after, const checker::Limits& limits) {
-  namespace sym = checker::symbolic;
-  const auto began = std::chrono::steady_clock::now();
-  const auto elapsed = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-  };
-  const tioa::Automaton env = u_environment(config, starts);
-  const sym::BddSession session(std::max(layer.layout().bits(), env.layout().bits()));
-  SymbolicRun run;
-  sym::LearningFigures figures;
+namespace sym = checker::symbolic;
+
+SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
+                     const tioa::Automaton& layer, const checker::Limits& limits)
+    : began_(std::chrono::steady_clock::now()), limits_(limits),
+      environment_(u_environment(config, starts)),
+      session_(std::make_unique<sym::BddSession>(
+          std::max(layer.layout().bits(), environment_.layout().bits()))) {
+  const auto stop = [this] { return limits_.out_of_time(elapsed()); };
   // R(env): every state the environment reaches with its inputs from the nodes free.
-  const auto stop = [&] { return limits.out_of_time(elapsed()); };
-  const sym::Space env_space(env);
-  sym::System env_system(env_space, figures);
-  env_system.set_stop(stop);
   bdd env_reach;
-  try {
-    env_reach = env_system.reach(sym::start_states(env_space, env.start()));
-  } catch (const sym::Stopped&) {
+  {
+    const sym::Space env_space(environment_);
+    sym::System env_system(env_space, figures_);
+    env_system.set_stop(stop);
+    try {
+      env_reach = env_system.reach(sym::start_states(env_space, environment_.start()));
+    } catch (const sym::Stopped&) {
+      return;
+    }
+    environment_states_ = env_space.count(env_reach);
+    space_.emplace(layer);
+    // Every valuation of the nodes' variables, with the environment in R(env).
+    start_ = sym::move_set(env_reach, env_space, *space_) & space_->valid();
+  }
+  env_reach = bddfalse;
+  sym::BddSession::reorder_by_variables(layer.layout());
+  system_.emplace(*space_, figures_);
+  system_->set_stop(stop);
+}
+
+SymbolicU::~SymbolicU() {
+  // Every bdd before the session closes.
+  start_ = bddfalse;
+  system_.reset();
+  space_.reset();
+}
+
+double SymbolicU::elapsed() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
+}
+
+bdd SymbolicU::conjunction(const std::vector<tioa::StatePredicate>& conjuncts) {
+  if (stopped())
+    return bddfalse;
+  bdd set = space_->valid();
+  for (const tioa::StatePredicate& conjunct : conjuncts)
+    set &= sym::learn_predicate(*space_, conjunct, figures_);
+  return set;
+}
+
+bdd SymbolicU::known_lmc(const KnownLmc& known) {
+  if (stopped())
+    return bddfalse;
+  return known_lmc_set(*space_, known, figures_);
+}
+
+SymbolicRun SymbolicU::stabilise(const bdd& start, const bdd& legal, const bdd& settled,
+                                 std::uint64_t witness_after) {
+  SymbolicRun run;
+  run.seconds = elapsed();
+  if (stopped()) {
     run.result.stopped = true;
     return run;
   }
-  run.environment_states = env_space.count(env_reach);
-
-  const sym::Space space(layer);
-  sym::BddSession::reorder_by_variables(layer.layout());
-  sym::System system(space, figures);
-  system.set_stop(stop);
-  // Every valuation of the nodes' variables, with the environment in R(env).
-  const bdd start = sym::move_set(env_reach, env_space, space) & space.valid();
-  bdd in_legal = space.valid();
-  for (const tioa::StatePredicate& conjunct : legal)
-    in_legal &= sym::learn_predicate(space, conjunct, figures);
-  run.result = sym::stabilise(system, start, in_legal, witness_after);
-  run.learned_cubes = figures.leaves;
+  system_->set_settled(settled);
+  run.result = sym::stabilise(*system_, start, legal, witness_after);
+  system_->set_settled(bddfalse);
+  run.environment_states = environment_states_;
+  run.learned_cubes = figures_.leaves;
   run.seconds = elapsed();
   return run;
 }

@@ -2,15 +2,19 @@
 // Stabilisation from every start state of U(VLNodes) ‖ R(RW ‖ VW ‖ VBcast) at once,
 // symbolically (checker/symbolic_stabilisation.hpp): R(env) is computed as a BDD from the
 // environment's start states, the nodes' variables range over every valuation, and the legal
-// set is built conjunct by conjunct. On 1x1 with one robot and no junk slots that is
-// 1.1·10^16 start states, decided in about 15 s.
+// sets are built conjunct by conjunct. On 1x1 with one robot and no junk slots that is
+// 1.1·10^16 start states, each check decided in under two minutes.
 
+#include <chrono>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "checker/options.hpp"
 #include "checker/symbolic_stabilisation.hpp"
 #include "proofs/vlayer_mc/arbitrary_starts.hpp"
+#include "proofs/vlayer_mc/known_lmc.hpp"
 
 namespace vlayer_mc {
 
@@ -18,14 +22,47 @@ struct SymbolicRun {
   checker::symbolic::StabilisationResult result;
   double environment_states = 0; // |R(env)|
   std::uint64_t learned_cubes = 0;
-  double seconds = 0;
+  double seconds = 0; // since the SymbolicU was made: learning and R(env) included
 };
 
-// `layer` is u_layer(config, starts); `legal` the conjuncts of the legal set on its states;
-// a start state of a worst case is picked when the worst time exceeds `witness_after`.
-SymbolicRun stabilise_from_u(const VlConfig& config, const ArbitraryStarts& starts,
-                             const tioa::Automaton& layer,
-                             const std::vector<tioa::StatePredicate>& legal,
-                             std::uint64_t witness_after, const checker::Limits& limits);
+// The layer's steps learned and its start states U(VLNodes) ‖ R(env) as one set, for one or
+// more stabilisation checks on the same layer. Holds the one BddSession.
+class SymbolicU {
+public:
+  // `layer` is u_layer(config, starts). R(env) may stop at the limits' time: stopped().
+  SymbolicU(const VlConfig& config, const ArbitraryStarts& starts, const tioa::Automaton& layer,
+            const checker::Limits& limits);
+  ~SymbolicU();
+
+  bool stopped() const { return !system_; } // R(env) was not finished
+  const checker::symbolic::Space& space() const { return *space_; }
+  const bdd& start() const { return start_; }
+  double environment_states() const { return environment_states_; }
+
+  // When stopped(), the sets below are empty and stabilise() says stopped.
+
+  // The states that satisfy every one of `conjuncts`.
+  bdd conjunction(const std::vector<tioa::StatePredicate>& conjuncts);
+  // The states KnownLmc::contains (symbolic_lmc.hpp).
+  bdd known_lmc(const KnownLmc& known);
+
+  // From `start` into `legal`, with `settled` counted in L and not expanded (bddfalse: none);
+  // a start state of a worst case is picked when the worst time exceeds `witness_after`.
+  SymbolicRun stabilise(const bdd& start, const bdd& legal, const bdd& settled,
+                        std::uint64_t witness_after);
+
+private:
+  double elapsed() const;
+
+  std::chrono::steady_clock::time_point began_;
+  checker::Limits limits_;
+  tioa::Automaton environment_;
+  std::unique_ptr<checker::symbolic::BddSession> session_;
+  checker::symbolic::LearningFigures figures_;
+  std::optional<checker::symbolic::Space> space_;
+  std::optional<checker::symbolic::System> system_;
+  bdd start_ = bddfalse;
+  double environment_states_ = 0;
+};
 
 } // namespace vlayer_mc

@@ -1,0 +1,108 @@
+#include "proofs/vlayer_mc/symbolic_verdict.hpp"
+
+#include <cstdio>
+#include <optional>
+#include <stdexcept>
+
+#include "checker/checks.hpp"
+#include "models/vlayer_mc/state_list.hpp"
+#include "proofs/vlayer_mc/stabilisation_common.hpp"
+#include "tioa/operators.hpp"
+
+namespace vlayer_mc {
+
+using checker::PropertyResult;
+
+std::string scientific(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
+namespace {
+
+// check_stabilisation from the one state `start` of `layer`.
+PropertyResult explicit_from(const tioa::Automaton& layer, const std::vector<tioa::Word>& start,
+                             const SymbolicClaim& claim, const checker::ExploreOptions& options) {
+  const StateList one{layer.words(), start};
+  const tioa::Automaton from = tioa::Start(layer, one.start(layer, "the start state picked"));
+  return claim.settled ? checker::check_stabilisation(from, claim.legal, claim.settled, options)
+                       : checker::check_stabilisation(from, claim.legal, options);
+}
+
+PropertyResult judged(const SymbolicRun& run, const tioa::Automaton& layer,
+                      const SymbolicClaim& claim, const checker::ExploreOptions& options) {
+  const checker::symbolic::StabilisationResult& s = run.result;
+  PropertyResult r;
+  if (s.stopped) {
+    r.kind = "stabilisation";
+    r.verdict = checker::Verdict::incomplete;
+    r.message = claim.what + ": the symbolic computation stopped at the time limit";
+    return r;
+  }
+  const bool late = !s.worst || *s.worst > claim.bound;
+  const bool stops_time = s.time_locked > 0 || s.zero_time_forever > 0;
+  const std::vector<tioa::Word>& witness = late ? s.worst_start : s.time_lock_start;
+  if ((late || stops_time) && witness.empty())
+    throw std::logic_error(claim.what + ": the symbolic computation found no start state for "
+                                        "what it found");
+  if (witness.empty()) {
+    PropertyResult m;
+    m.kind = "stabilisation";
+    m.verdict = checker::Verdict::holds;
+    m.time_unit = "quanta";
+    m.worst_time = s.worst;
+    m.states = s.reachable < 1.8e19 ? static_cast<std::uint64_t>(s.reachable) : 0;
+    m.seconds = run.seconds;
+    r = judge(std::move(m), claim.bound, claim.what, claim.exhaustive, claim.exact, "");
+    r.message += ", from every start state";
+    return r;
+  }
+  PropertyResult m = explicit_from(layer, witness, claim, options);
+  if (late && s.worst && m.worst_time != s.worst)
+    throw std::logic_error(claim.what + ": the symbolic worst time " + std::to_string(*s.worst) +
+                           " is not the explicit one from its start state");
+  const std::string detail = claim.detail ? claim.detail(m) : "";
+  r = judge(std::move(m), claim.bound, claim.what, claim.exhaustive, claim.exact, detail);
+  if (!late && r.verdict == checker::Verdict::holds) {
+    // The explicit run from that start state meets the bound: the time-lock or the endless
+    // zero-time steps are not judged by the layers, so no claim of holds.
+    r.verdict = checker::Verdict::incomplete;
+    r.message = claim.what + ": worst time " + std::to_string(s.worst.value_or(0)) +
+                " within the bound, but " + scientific(s.time_locked) +
+                " reachable states are time-locked and " + scientific(s.zero_time_forever) +
+                " can take zero-time steps for ever";
+  }
+  r.seconds += run.seconds; // (the symbolic part, then the explicit run)
+  r.notes.push_back("the trace: explored explicitly from the start state the symbolic "
+                    "computation picked (one of those with the latest time outside the set)");
+  return r;
+}
+
+} // namespace
+
+PropertyResult judge_symbolic(const SymbolicRun& run, const tioa::Automaton& layer,
+                              const SymbolicClaim& claim, const checker::ExploreOptions& options) {
+  const checker::symbolic::StabilisationResult& s = run.result;
+  PropertyResult r = judged(run, layer, claim, options);
+  const bool fits = s.start_states < 1.8e19; // (in 64 bits)
+  r.coverage = {
+      checker::Starts::all, fits && !s.stopped ? static_cast<std::uint64_t>(s.start_states) : 0,
+      fits && !s.stopped ? std::optional<std::uint64_t>(s.start_states) : std::nullopt, claim.over,
+      s.stopped ? "decided symbolically, stopped at the time limit"
+                : "every one, decided symbolically (binary decision diagrams)"};
+  r.figures.emplace_back("covered", s.stopped ? "none decided: the symbolic computation stopped at "
+                                                "the time limit"
+                                              : "every start state of " + claim.over + ": " +
+                                                    scientific(s.start_states) + " (symbolic)");
+  r.figures.emplace_back(
+      "symbolic",
+      scientific(s.start_states) + " start states (R(env): " + scientific(run.environment_states) +
+          " states), " + scientific(s.reachable) + " reachable, " + std::to_string(s.layers) +
+          " time layers, " + std::to_string(run.learned_cubes) + " cubes learned, " +
+          scientific(s.time_locked) + " time-locked, " + scientific(s.zero_time_forever) +
+          " with endless zero-time steps, " + scientific(run.seconds) + " s");
+  return r;
+}
+
+} // namespace vlayer_mc
