@@ -29,7 +29,7 @@ void run_layers(const System& system, const bdd& start, const bdd& legal,
   bdd outside_for_ever = bddfalse;
   std::size_t period_start = 0;
   for (std::size_t k = 0;; ++k) {
-    if ((layers[k] & !legal) == bddfalse && (system.reach(layers[k]) & !legal) == bddfalse) {
+    if (system.stays_within(layers[k], legal)) {
       r.worst = k;
       break;
     }

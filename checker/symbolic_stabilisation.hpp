@@ -8,7 +8,8 @@
 //   one tick from X_k,
 // and those it can be in at any time >= k are A_k = everything reachable from X_k. The worst
 // time is the least k with A_k inside L: the layers are computed one by one, and only a
-// layer inside L has its A_k computed (a layer with a state outside L has A_k outside too).
+// layer inside L is followed further, inside L only, until a step leaves L (A_k is then not
+// inside) or nothing new comes (System::stays_within).
 // There are finitely many sets, so the layers repeat at last (X_k = X_j, j < k); from j on
 // they go round, A_j is the union of the period, and if no earlier k ended the search that
 // union has a state outside L: an execution outside L at every time, no worst time.

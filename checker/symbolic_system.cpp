@@ -47,6 +47,33 @@ bdd System::closure(const bdd& set, bool with_tick, bool backward, const bdd& wi
   return all;
 }
 
+bool System::stays_within(const bdd& set, const bdd& inside) const {
+  if ((set & !inside) != bddfalse)
+    return false;
+  bdd all = set, frontier = set;
+  bool left = false;
+  const auto apply = [&](const StepRelation& step) {
+    if (left)
+      return bdd(bddfalse);
+    const bdd image = step.image(frontier & !settled_);
+    left = (image & !inside) != bddfalse;
+    const bdd fresh = image & !all;
+    all |= fresh;
+    frontier |= fresh;
+    return fresh;
+  };
+  while (frontier != bddfalse && !left) {
+    if (stop_ && stop_())
+      throw Stopped{};
+    bdd added = bddfalse;
+    for (const StepRelation& step : zero_time_)
+      added |= apply(step);
+    added |= apply(tick_);
+    frontier = added;
+  }
+  return !left;
+}
+
 bdd System::zero_time_closure(const bdd& set) const {
   return closure(set, false, false, bddtrue);
 }

@@ -36,6 +36,9 @@ public:
   bdd zero_time_closure(const bdd& set) const;
   // `set` and the states of `within` whose zero-time steps inside `within` lead into it.
   bdd back_zero_time_closure(const bdd& set, const bdd& within) const;
+  // Whether everything reachable from `set` (ticks included) lies in `inside`: the states
+  // reachable inside it are expanded until a step leaves it (false) or none is left (true).
+  bool stays_within(const bdd& set, const bdd& inside) const;
   // Everything reachable from `set`, ticks included; and everything that reaches it.
   bdd reach(const bdd& set) const;
   bdd back_reach(const bdd& set) const;

@@ -1,7 +1,6 @@
 #include "proofs/lemma_7_3.hpp"
 
 #include <cstdint>
-#include <memory>
 #include <string>
 
 #include "checker/checks.hpp"
@@ -40,14 +39,7 @@ PropertyResult finish(PropertyResult r, const VlConfig& c, const ArbitraryStarts
                       const tioa::Automaton& layer) {
   r.notes.push_back("the bound: time t > eps_sample = " + std::to_string(c.eps_sample) +
                     " is, in whole quanta, t = eps_sample + 1");
-  r.notes.push_back(faults_note(starts.faults, c.dr_rule));
-  r.notes.push_back(junk_note(starts.junk));
-  // Its trace is one of the layer with junk slots (D31).
-  r.trace_system = std::make_shared<const tioa::Automaton>(layer);
-  r.trace_system_name = u_layer_name;
-  note_repairs(c, r);
-  note_round_length(c, r);
-  return r;
+  return with_common_notes(std::move(r), c, starts, layer);
 }
 
 // Every start state at once (symbolic_verdict.hpp).

@@ -1,7 +1,6 @@
 #include "proofs/lemma_7_4.hpp"
 
 #include <cstdint>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,19 +25,12 @@ tioa::Automaton placed_instance(const VlConfig& c, const tioa::Automaton& layer)
   return tioa::Start(layer, placed_start(layer, start_points(c)));
 }
 
-// The notes and trace system every Lemma 7.4 result carries; its trace is one of `layer`,
-// which has junk slots (D31).
+// The figures and notes every Lemma 7.4 result carries.
 PropertyResult finish_7_4(PropertyResult r, const VlConfig& c, const ArbitraryStarts& starts,
                           const tioa::Automaton& layer, const KnownLmc& known) {
   r.figures.emplace_back("known LMC", describe_known(known));
   r.notes.push_back(lmc_measure_note);
-  r.notes.push_back(faults_note(starts.faults, c.dr_rule));
-  r.notes.push_back(junk_note(starts.junk));
-  r.trace_system = std::make_shared<const tioa::Automaton>(layer);
-  r.trace_system_name = u_layer_name;
-  note_repairs(c, r);
-  note_round_length(c, r);
-  return r;
+  return with_common_notes(std::move(r), c, starts, layer);
 }
 
 // From every L1MC state at once (symbolic_verdict.hpp): L1MC is every start state of
@@ -48,10 +40,7 @@ PropertyResult lemma_7_4_symbolically(const VlConfig& c, MWindow window,
                                       const checker::ExploreOptions& options) {
   const tioa::Automaton layer = u_layer(c, starts);
   const KnownLmc known(c, layer, options);
-  const tioa::StatePredicate reset = reset_mc_or_targetless(c, layer, window);
-  const tioa::StatePredicate in_lmc = [&](const tioa::State& s) {
-    return reset(s) || known.contains(s);
-  };
+  const tioa::StatePredicate in_lmc = in_measured_lmc(c, layer, window, known);
   const std::uint64_t bound = static_cast<std::uint64_t>(c.delta + c.d + c.e);
   SymbolicU u(c, starts, layer, options.limits);
   const bdd lmc =
@@ -86,10 +75,7 @@ PropertyResult check_lemma_7_4(const VlConfig& c, MWindow window, const Arbitrar
   from.data.insert(from.data.end(), arbitrary.data.begin(), arbitrary.data.end());
   const KnownLmc known(c, u.layer, options);
   complete = complete && known.complete();
-  const tioa::StatePredicate reset = reset_mc_or_targetless(c, u.layer, window);
-  const tioa::StatePredicate in_lmc = [&](const tioa::State& s) {
-    return reset(s) || known.contains(s);
-  };
+  const tioa::StatePredicate in_lmc = in_measured_lmc(c, u.layer, window, known);
   PropertyResult m = checker::check_stabilisation(
       tioa::Start(u.layer, from.start(u.layer, "L1MC states reached")), in_lmc, in_lmc, options);
   // Every L1MC state is a start state of U(VLNodes) || R(env) (its environment part is

@@ -2,7 +2,6 @@
 
 #include <cstdint>
 #include <limits>
-#include <memory>
 #include <optional>
 #include <string>
 
@@ -33,8 +32,8 @@ std::string time_of(const std::optional<std::uint64_t>& worst, Verdict verdict) 
   return worst ? std::to_string(*worst) : std::string(checker::to_string(verdict));
 }
 
-// Lemma 3.4's composition (t <= t1 + t2), the three figures, and the notes and trace system
-// every Theorem 7.5 result carries.
+// Lemma 3.4's composition (t <= t1 + t2), the three figures, and the notes every Theorem
+// 7.5 result carries.
 PropertyResult finish_7_5(PropertyResult r, const Times& times, const VlConfig& c,
                           const ArbitraryStarts& starts, const tioa::Automaton& layer,
                           const KnownLmc& known) {
@@ -52,14 +51,7 @@ PropertyResult finish_7_5(PropertyResult r, const Times& times, const VlConfig& 
   }
   r.figures.emplace_back("known LMC", describe_known(known));
   r.notes.push_back(lmc_measure_note);
-  r.notes.push_back(faults_note(starts.faults, c.dr_rule));
-  r.notes.push_back(junk_note(starts.junk));
-  // Its trace is one of `layer`, which has junk slots (D31).
-  r.trace_system = std::make_shared<const tioa::Automaton>(layer);
-  r.trace_system_name = u_layer_name;
-  note_repairs(c, r);
-  note_round_length(c, r);
-  return r;
+  return with_common_notes(std::move(r), c, starts, layer);
 }
 
 // Every start state at once (symbolic_verdict.hpp): t1 and t2 from every start state and
@@ -69,10 +61,7 @@ PropertyResult theorem_7_5_symbolically(const VlConfig& c, MWindow window,
                                         const checker::ExploreOptions& options) {
   const tioa::Automaton layer = u_layer(c, starts);
   const KnownLmc known(c, layer, options);
-  const tioa::StatePredicate reset = reset_mc_or_targetless(c, layer, window);
-  const tioa::StatePredicate in_lmc = [&](const tioa::State& s) {
-    return reset(s) || known.contains(s);
-  };
+  const tioa::StatePredicate in_lmc = in_measured_lmc(c, layer, window, known);
   const std::uint64_t bound = static_cast<std::uint64_t>(c.delta + c.d + c.e + c.eps_sample);
   const std::uint64_t no_witness = std::numeric_limits<std::uint64_t>::max();
   SymbolicU u(c, starts, layer, options.limits);
@@ -117,11 +106,8 @@ PropertyResult check_theorem_7_5(const VlConfig& c, MWindow window, const Arbitr
   const tioa::Automaton system =
       tioa::Start(u.layer, u.states.start(u.layer, "U(VLNodes) || R(RW || VW || VBcast)"));
   const tioa::StatePredicate in_l1mc = l1mc(c, u.layer, window);
-  const tioa::StatePredicate reset = reset_mc_or_targetless(c, u.layer, window);
   const KnownLmc known(c, u.layer, options);
-  const tioa::StatePredicate in_lmc = [&](const tioa::State& s) {
-    return reset(s) || known.contains(s);
-  };
+  const tioa::StatePredicate in_lmc = in_measured_lmc(c, u.layer, window, known);
 
   const PropertyResult first = checker::check_stabilisation(system, in_l1mc, options);
   bool complete = true;

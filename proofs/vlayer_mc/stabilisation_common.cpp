@@ -2,6 +2,8 @@
 
 #include "checker/explorer.hpp"
 #include "checker/run_limits.hpp"
+#include "models/vlayer_mc/reset_mc.hpp"
+#include "proofs/vlayer_mc/legal_sets.hpp"
 #include "tioa/successors.hpp"
 
 namespace vlayer_mc {
@@ -79,6 +81,24 @@ PropertyResult judge(PropertyResult m, std::uint64_t bound, const std::string& w
   m.verdict = exhaustive ? Verdict::holds : Verdict::incomplete;
   m.message = what + (exhaustive ? " holds: " : " holds on every start state sampled: ") + measured;
   return m;
+}
+
+tioa::StatePredicate in_measured_lmc(const VlConfig& c, const tioa::Automaton& layer,
+                                     MWindow window, const KnownLmc& known) {
+  return [reset = reset_mc_or_targetless(c, layer, window), &known](const tioa::State& s) {
+    return reset(s) || known.contains(s);
+  };
+}
+
+PropertyResult with_common_notes(PropertyResult r, const VlConfig& c, const ArbitraryStarts& starts,
+                                 const tioa::Automaton& layer) {
+  r.notes.push_back(faults_note(starts.faults, c.dr_rule));
+  r.notes.push_back(junk_note(starts.junk));
+  r.trace_system = std::make_shared<const tioa::Automaton>(layer);
+  r.trace_system_name = u_layer_name;
+  note_repairs(c, r);
+  note_round_length(c, r);
+  return r;
 }
 
 } // namespace vlayer_mc

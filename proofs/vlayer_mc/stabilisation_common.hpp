@@ -28,7 +28,9 @@
 
 #include "checker/options.hpp"
 #include "checker/result.hpp"
+#include "models/vlayer_mc/l1mc.hpp"
 #include "models/vlayer_mc/state_list.hpp"
+#include "proofs/vlayer_mc/arbitrary_starts.hpp"
 #include "proofs/vlayer_mc/known_lmc.hpp"
 #include "tioa/automaton.hpp"
 
@@ -50,6 +52,18 @@ checker::PropertyResult judge(checker::PropertyResult m, std::uint64_t bound,
 
 // The figure `known LMC`: how many classes the known part of LMC has, and from what.
 std::string describe_known(const KnownLmc& known);
+
+// "In LMC" as Lemma 7.4 and Theorem 7.5 measure it (lmc_measure_note): ResetMC or its
+// targetless exception (D30), or a state of a known class (D29). `known` must outlive it.
+tioa::StatePredicate in_measured_lmc(const VlConfig& config, const tioa::Automaton& layer,
+                                     MWindow window, const KnownLmc& known);
+
+// The notes and the trace system every stabilisation result of §7.2 carries: faults after
+// t0, junk slots, the variant's repairs, the round length; its traces are `layer`'s (which
+// has junk slots, D31).
+checker::PropertyResult with_common_notes(checker::PropertyResult r, const VlConfig& config,
+                                          const ArbitraryStarts& starts,
+                                          const tioa::Automaton& layer);
 
 // The note of the checks that measure the time into LMC (Lemma 7.4, Theorem 7.5).
 extern const char* const lmc_measure_note;

@@ -38,6 +38,7 @@ PropertyResult judged(const SymbolicRun& run, const tioa::Automaton& layer,
     r.kind = "stabilisation";
     r.verdict = checker::Verdict::incomplete;
     r.message = claim.what + ": the symbolic computation stopped at the time limit";
+    r.seconds = run.seconds;
     return r;
   }
   const bool late = !s.worst || *s.worst > claim.bound;
