@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "checker/memory_budget.hpp"
+
 #include "proofs/vlayer_mc/symbolic_lmc.hpp"
 
 namespace vlayer_mc {
@@ -14,7 +16,14 @@ SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
       environment_(u_environment(config, starts)),
       session_(std::make_unique<sym::BddSession>(
           std::max(layer.layout().bits(), environment_.layout().bits()))) {
-  const auto stop = [this] { return limits_.out_of_time(elapsed()); };
+  // Asked at every fixpoint round (a single image may still go past the memory limit).
+  const auto stop = [this] {
+    if (limits_.out_of_time(elapsed()))
+      stopped_by_ = "the time limit";
+    else if (checker::resident_over_limit(limits_))
+      stopped_by_ = "the memory limit";
+    return !stopped_by_.empty();
+  };
   // R(env): every state the environment reaches with its inputs from the nodes free.
   bdd env_reach;
   {
@@ -67,6 +76,7 @@ SymbolicRun SymbolicU::stabilise(const bdd& start, const bdd& legal, const bdd& 
                                  std::uint64_t witness_after) {
   SymbolicRun run;
   run.seconds = elapsed();
+  run.stopped_by = stopped_by_;
   if (stopped()) {
     run.result.stopped = true;
     return run;
@@ -77,6 +87,7 @@ SymbolicRun SymbolicU::stabilise(const bdd& start, const bdd& legal, const bdd& 
   run.environment_states = environment_states_;
   run.learned_cubes = figures_.leaves;
   run.seconds = elapsed();
+  run.stopped_by = stopped_by_;
   return run;
 }
 

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "checker/options.hpp"
@@ -22,14 +23,16 @@ struct SymbolicRun {
   checker::symbolic::StabilisationResult result;
   double environment_states = 0; // |R(env)|
   std::uint64_t learned_cubes = 0;
-  double seconds = 0; // since the SymbolicU was made: learning and R(env) included
+  double seconds = 0;     // since the SymbolicU was made: learning and R(env) included
+  std::string stopped_by; // "the time limit" or "the memory limit", when result.stopped
 };
 
 // The layer's steps learned and its start states U(VLNodes) ‖ R(env) as one set, for one or
 // more stabilisation checks on the same layer. Holds the one BddSession.
 class SymbolicU {
 public:
-  // `layer` is u_layer(config, starts). R(env) may stop at the limits' time: stopped().
+  // `layer` is u_layer(config, starts). R(env) may stop at the limits' time or memory
+  // (resident memory, asked at every fixpoint round): stopped().
   SymbolicU(const VlConfig& config, const ArbitraryStarts& starts, const tioa::Automaton& layer,
             const checker::Limits& limits);
   ~SymbolicU();
@@ -63,6 +66,7 @@ private:
   std::optional<checker::symbolic::System> system_;
   bdd start_ = bddfalse;
   double environment_states_ = 0;
+  std::string stopped_by_;
 };
 
 } // namespace vlayer_mc

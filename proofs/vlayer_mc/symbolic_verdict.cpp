@@ -37,7 +37,7 @@ PropertyResult judged(const SymbolicRun& run, const tioa::Automaton& layer,
   if (s.stopped) {
     r.kind = "stabilisation";
     r.verdict = checker::Verdict::incomplete;
-    r.message = claim.what + ": the symbolic computation stopped at the time limit";
+    r.message = claim.what + ": the symbolic computation stopped at " + run.stopped_by;
     r.seconds = run.seconds;
     return r;
   }
@@ -87,13 +87,18 @@ PropertyResult judge_symbolic(const SymbolicRun& run, const tioa::Automaton& lay
   const checker::symbolic::StabilisationResult& s = run.result;
   PropertyResult r = judged(run, layer, claim, options);
   const bool fits = s.start_states < 1.8e19; // (in 64 bits)
+  // (A count past 64 bits is left 0 and given in words.)
   r.coverage = {
       checker::Starts::all, fits && !s.stopped ? static_cast<std::uint64_t>(s.start_states) : 0,
       fits && !s.stopped ? std::optional<std::uint64_t>(s.start_states) : std::nullopt, claim.over,
-      s.stopped ? "decided symbolically, stopped at the time limit"
-                : "every one, decided symbolically (binary decision diagrams)"};
-  r.figures.emplace_back("covered", s.stopped ? "none decided: the symbolic computation stopped at "
-                                                "the time limit"
+      s.stopped
+          ? "decided symbolically, stopped at " + run.stopped_by
+          : std::string("every one") +
+                (fits ? "" : " (" + scientific(s.start_states) + ", more than 64 bits count)") +
+                ", decided symbolically (binary decision diagrams)"};
+  r.figures.emplace_back("covered", s.stopped ? "none decided: the symbolic computation stopped "
+                                                "at " +
+                                                    run.stopped_by
                                               : "every start state of " + claim.over + ": " +
                                                     scientific(s.start_states) + " (symbolic)");
   r.figures.emplace_back(
