@@ -261,7 +261,7 @@ ModelDefinition vlayer_mc_definition() {
              // counterexample); repaired, every sample meets it, which is still incomplete.
              {closed_1x1, "lemma-7.3", checker::Verdict::violated},
              {repaired_1x1, "lemma-7.3", checker::Verdict::incomplete},
-             // From every start state (junk=0, about 45 s and 25 s): repaired CN and VN still
+             // From every start state (junk=0, about 60 s and 25 s): repaired CN and VN still
              // fail it (F5 on 1×1: a VN with a wrong clock sends a target-update that a CN
              // takes at the next round start, (4b) at time 2), and with D28 it holds.
              {every_start_repaired_1x1, "lemma-7.3", checker::Verdict::violated},
