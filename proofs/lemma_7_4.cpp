@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "checker/checks.hpp"
-#include "models/vlayer_mc/reset_mc.hpp"
 #include "models/vlayer_mc/vlayer.hpp"
 #include "proofs/vlayer_mc/known_lmc.hpp"
 #include "proofs/vlayer_mc/legal_sets.hpp"
@@ -43,8 +42,7 @@ PropertyResult lemma_7_4_symbolically(const VlConfig& c, MWindow window,
   const tioa::StatePredicate in_lmc = in_measured_lmc(c, layer, window, known);
   const std::uint64_t bound = static_cast<std::uint64_t>(c.delta + c.d + c.e);
   SymbolicU u(c, starts, layer, options.limits);
-  const bdd lmc =
-      u.conjunction(reset_mc_or_targetless_conjuncts(c, layer, window)) | u.known_lmc(known);
+  const bdd lmc = u.measured_lmc(c, layer, window, known);
   const bdd l1 = u.start() & u.conjunction(l1mc_conjuncts(c, layer, window));
   const SymbolicRun run = u.stabilise(l1, lmc, lmc, bound);
   const SymbolicClaim claim{"Lemma 7.4 (from L1MC, in LMC from delta + d + e on)",

@@ -6,7 +6,6 @@
 #include <string>
 
 #include "checker/checks.hpp"
-#include "models/vlayer_mc/reset_mc.hpp"
 #include "proofs/vlayer_mc/known_lmc.hpp"
 #include "proofs/vlayer_mc/legal_sets.hpp"
 #include "proofs/vlayer_mc/stabilisation_common.hpp"
@@ -66,8 +65,7 @@ PropertyResult theorem_7_5_symbolically(const VlConfig& c, MWindow window,
   const std::uint64_t no_witness = std::numeric_limits<std::uint64_t>::max();
   SymbolicU u(c, starts, layer, options.limits);
   const bdd l1 = u.conjunction(l1mc_conjuncts(c, layer, window));
-  const bdd lmc =
-      u.conjunction(reset_mc_or_targetless_conjuncts(c, layer, window)) | u.known_lmc(known);
+  const bdd lmc = u.measured_lmc(c, layer, window, known);
   const auto text = [](const SymbolicRun& run) {
     return run.result.stopped ? std::string("stopped")
                               : time_of(run.result.worst, Verdict::incomplete);

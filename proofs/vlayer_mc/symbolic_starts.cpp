@@ -4,6 +4,7 @@
 
 #include "checker/memory_budget.hpp"
 
+#include "models/vlayer_mc/reset_mc.hpp"
 #include "proofs/vlayer_mc/symbolic_lmc.hpp"
 
 namespace vlayer_mc {
@@ -46,13 +47,6 @@ SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
   system_->set_stop(stop);
 }
 
-SymbolicU::~SymbolicU() {
-  // Every bdd before the session closes.
-  start_ = bddfalse;
-  system_.reset();
-  space_.reset();
-}
-
 double SymbolicU::elapsed() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
 }
@@ -66,10 +60,12 @@ bdd SymbolicU::conjunction(const std::vector<tioa::StatePredicate>& conjuncts) {
   return set;
 }
 
-bdd SymbolicU::known_lmc(const KnownLmc& known) {
+bdd SymbolicU::measured_lmc(const VlConfig& config, const tioa::Automaton& layer, MWindow window,
+                            const KnownLmc& known) {
   if (stopped())
     return bddfalse;
-  return known_lmc_set(*space_, known, figures_);
+  return conjunction(reset_mc_or_targetless_conjuncts(config, layer, window)) |
+         known_lmc_set(*space_, known, figures_);
 }
 
 SymbolicRun SymbolicU::stabilise(const bdd& start, const bdd& legal, const bdd& settled,

@@ -14,6 +14,7 @@
 
 #include "checker/options.hpp"
 #include "checker/symbolic_stabilisation.hpp"
+#include "models/vlayer_mc/l1mc.hpp"
 #include "proofs/vlayer_mc/arbitrary_starts.hpp"
 #include "proofs/vlayer_mc/known_lmc.hpp"
 
@@ -35,7 +36,6 @@ public:
   // (resident memory, asked at every fixpoint round): stopped().
   SymbolicU(const VlConfig& config, const ArbitraryStarts& starts, const tioa::Automaton& layer,
             const checker::Limits& limits);
-  ~SymbolicU();
 
   bool stopped() const { return !system_; } // R(env) was not finished
   const checker::symbolic::Space& space() const { return *space_; }
@@ -46,8 +46,10 @@ public:
 
   // The states that satisfy every one of `conjuncts`.
   bdd conjunction(const std::vector<tioa::StatePredicate>& conjuncts);
-  // The states KnownLmc::contains (symbolic_lmc.hpp).
-  bdd known_lmc(const KnownLmc& known);
+  // "In LMC" as Lemma 7.4 and Theorem 7.5 measure it (in_measured_lmc): ResetMC or D30's
+  // exception, or a state KnownLmc::contains (symbolic_lmc.hpp). `layer` is the one given.
+  bdd measured_lmc(const VlConfig& config, const tioa::Automaton& layer, MWindow window,
+                   const KnownLmc& known);
 
   // From `start` into `legal`, with `settled` counted in L and not expanded (bddfalse: none);
   // a start state of a worst case is picked when the worst time exceeds `witness_after`.
@@ -60,7 +62,7 @@ private:
   std::chrono::steady_clock::time_point began_;
   checker::Limits limits_;
   tioa::Automaton environment_;
-  std::unique_ptr<checker::symbolic::BddSession> session_;
+  std::unique_ptr<checker::symbolic::BddSession> session_; // (every bdd below goes first)
   checker::symbolic::LearningFigures figures_;
   std::optional<checker::symbolic::Space> space_;
   std::optional<checker::symbolic::System> system_;
