@@ -17,6 +17,26 @@ std::vector<Word> start_through_layers(const System& system, const std::vector<b
   return starts == bddfalse ? std::vector<Word>{} : system.space().pick(starts);
 }
 
+// The time-locks and endless zero-time runs among `everything` (closed under steps). With no
+// endless zero-time run and no stuck state, every maximal run of zero-time steps from a state
+// ends in one where time passes (or a settled one): no state is a time-lock, and the back
+// closure from every state where time passes (the costliest part on large sets) is not needed.
+void find_time_locks(const System& system, const bdd& start, const bdd& everything,
+                     StabilisationResult& r) {
+  const Space& space = system.space();
+  const bdd forever = system.zero_time_forever(everything);
+  const bdd locked = forever == bddfalse && system.stuck(everything) == bddfalse
+                         ? bdd(bddfalse)
+                         : system.time_locks(everything);
+  r.time_locked = space.count(locked);
+  r.zero_time_forever = space.count(forever);
+  if (locked != bddfalse || forever != bddfalse) {
+    const bdd starts = system.back_reach(locked | forever) & start;
+    if (starts != bddfalse)
+      r.time_lock_start = space.pick(starts);
+  }
+}
+
 void run_layers(const System& system, const bdd& start, const bdd& legal,
                 std::uint64_t witness_after, StabilisationResult& r) {
   const Space& space = system.space();
@@ -57,15 +77,7 @@ void run_layers(const System& system, const bdd& start, const bdd& legal,
     const bdd reaching = r.worst ? outside : system.back_reach(outside) & layers[late];
     r.worst_start = start_through_layers(system, layers, start, reaching, late);
   }
-  const bdd locked = system.time_locks(everything);
-  const bdd forever = system.zero_time_forever(everything);
-  r.time_locked = space.count(locked);
-  r.zero_time_forever = space.count(forever);
-  if (locked != bddfalse || forever != bddfalse) {
-    const bdd starts = system.back_reach(locked | forever) & start;
-    if (starts != bddfalse)
-      r.time_lock_start = space.pick(starts);
-  }
+  find_time_locks(system, start, everything, r);
 }
 
 } // namespace

@@ -99,6 +99,13 @@ bdd System::time_locks(const bdd& within) const {
   return within & !back_zero_time_closure(tick_.enabled() | settled_, bddtrue);
 }
 
+bdd System::stuck(const bdd& within) const {
+  bdd moves = tick_.enabled() | settled_;
+  for (const StepRelation& step : zero_time_)
+    moves |= step.enabled();
+  return within & !moves;
+}
+
 bdd System::zero_time_forever(const bdd& within) const {
   // The greatest set of states of `within` that each have a zero-time step into it.
   bdd keep = within & !settled_, before;

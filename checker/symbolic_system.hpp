@@ -47,6 +47,8 @@ public:
   bdd time_locks(const bdd& within) const;
   // The states of `within` from which zero-time steps can go on for ever inside `within`.
   bdd zero_time_forever(const bdd& within) const;
+  // The states of `within` that are stuck: not settled, no tick and no zero-time step.
+  bdd stuck(const bdd& within) const;
 
 private:
   bdd closure(const bdd& set, bool with_tick, bool backward, const bdd& within) const;
