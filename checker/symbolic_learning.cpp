@@ -96,10 +96,11 @@ Outcome start_outcome(const Space& space, const Word* state) {
 
 StepRelation::StepRelation(std::string name, const Space& space, std::vector<Word> writes,
                            bdd relation)
-    : name_(std::move(name)), relation_(std::move(relation)), written_current_(bddtrue),
-      written_next_(bddtrue), to_current_(bdd_newpair()), to_next_(bdd_newpair()) {
+    : name_(std::move(name)), writes_(std::move(writes)), relation_(std::move(relation)),
+      written_current_(bddtrue), written_next_(bddtrue), to_current_(bdd_newpair()),
+      to_next_(bdd_newpair()) {
   for (std::uint32_t b = 0; b < space.bits(); ++b)
-    if (Space::bit(writes.data(), b)) {
+    if (Space::bit(writes_.data(), b)) {
       written_current_ &= Space::current(b);
       written_next_ &= Space::next(b);
       bdd_setpair(to_current_, static_cast<int>(2 * b + 1), static_cast<int>(2 * b));
@@ -115,7 +116,7 @@ StepRelation::~StepRelation() {
 }
 
 StepRelation::StepRelation(StepRelation&& other) noexcept
-    : name_(std::move(other.name_)), relation_(other.relation_),
+    : name_(std::move(other.name_)), writes_(std::move(other.writes_)), relation_(other.relation_),
       written_current_(other.written_current_), written_next_(other.written_next_),
       to_current_(std::exchange(other.to_current_, nullptr)),
       to_next_(std::exchange(other.to_next_, nullptr)) {}

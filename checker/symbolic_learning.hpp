@@ -36,14 +36,22 @@ public:
 
   const std::string& name() const { return name_; }
   const bdd& relation() const { return relation_; }
+  // The bits its steps may write (the others keep their value).
+  const std::vector<Word>& writes() const { return writes_; }
   // The states one step of the group leads to from `set`, and those that lead into `set`.
   bdd image(const bdd& set) const;
   bdd preimage(const bdd& set) const;
   // The states where the group has a step.
-  bdd enabled() const { return bdd_exist(relation_, written_next_); }
+  bdd enabled() const { return sources(relation_); }
+  // For `steps`, a part of the relation: the states they start from, and those they lead to.
+  bdd sources(const bdd& steps) const { return bdd_exist(steps, written_next_); }
+  bdd targets(const bdd& steps) const {
+    return bdd_replace(bdd_exist(steps, written_current_), to_current_);
+  }
 
 private:
   std::string name_;
+  std::vector<Word> writes_;
   bdd relation_, written_current_, written_next_;
   bddPair* to_current_ = nullptr; // next bits of the written bits -> current
   bddPair* to_next_ = nullptr;    // and back

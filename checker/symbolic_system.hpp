@@ -4,6 +4,7 @@
 // states not yet expanded, including those the groups before it just added.
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "checker/symbolic_learning.hpp"
@@ -45,8 +46,12 @@ public:
   // The states of `within` from which no tick can ever come (zero-time steps only: the
   // time-locks of a timed automaton).
   bdd time_locks(const bdd& within) const;
-  // The states of `within` from which zero-time steps can go on for ever inside `within`.
+  // The states of `within` from which zero-time steps can go on for ever inside `within`
+  // (none at once when zero_time_acyclic()).
   bdd zero_time_forever(const bdd& within) const;
+  // Whether the zero-time steps have no cycle, proved by no_cycle_proved
+  // (symbolic_acyclic.hpp; computed once); false: not proved.
+  bool zero_time_acyclic() const;
   // The states of `within` that are stuck: not settled, no tick and no zero-time step.
   bdd stuck(const bdd& within) const;
 
@@ -58,6 +63,7 @@ private:
   StepRelation tick_;
   std::function<bool()> stop_;
   bdd settled_ = bddfalse;
+  mutable std::optional<bool> zero_time_acyclic_;
 };
 
 } // namespace checker::symbolic

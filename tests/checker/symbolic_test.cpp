@@ -174,3 +174,63 @@ TEST_CASE("symbolic: the worst time from every start state, as check_stabilisati
       CHECK_FALSE(both.symbolic);
   }
 }
+
+namespace {
+
+// Whether the symbolic System of `a` proves its zero-time steps free of cycles.
+bool acyclic_proved(const tioa::Automaton& a) {
+  const sym::BddSession session(a.layout().bits());
+  const sym::Space space(a);
+  sym::LearningFigures figures;
+  const sym::System system(space, figures);
+  return system.zero_time_acyclic();
+}
+
+} // namespace
+
+TEST_CASE("symbolic: zero-time steps proved free of cycles, or left to the fixpoint",
+          "[checker][symbolic]") {
+  SECTION("a real cycle (flip toggles b while x > 0): not proved") {
+    CHECK_FALSE(acyclic_proved(timed_countdown(3, true)));
+  }
+  SECTION("a counter that zero-time steps only lower: proved by the monotone rule") {
+    tioa::Automaton c("draining");
+    const auto y = c.integer("y", 0, 3, std::nullopt);
+    c.internal("drain")
+        .pre([=](const State& s, const Params&) { return s[y] > 0; })
+        .eff([=](State& s, const Params&) { s[y] = s[y] - 1; });
+    c.trajectories([](State&) {});
+    CHECK(acyclic_proved(tioa::U(c)));
+  }
+  SECTION("v set to a wanted value, up or down, only while it differs: the dead-end rule") {
+    tioa::Automaton c("settling");
+    const auto want = c.integer("want", 0, 3, std::nullopt);
+    const auto v = c.integer("v", 0, 3, std::nullopt);
+    c.internal("set", {{"to", 0, 3}})
+        .pre([=](const State& s, const Params& p) { return s[v] != s[want] && p[0] == s[want]; })
+        .eff([=](State& s, const Params& p) { s[v] = p[0]; });
+    c.trajectories([=](State& s) { s[want] = (s[want] + 1) % 4; });
+    CHECK(acyclic_proved(tioa::U(c)));
+  }
+  SECTION("two steps that undo each other: a real cycle, not proved") {
+    tioa::Automaton c("swapping");
+    const auto p = c.boolean("p", std::nullopt);
+    const auto q = c.boolean("q", std::nullopt);
+    c.internal("there")
+        .pre([=](const State& s, const Params&) { return s[p] && !s[q]; })
+        .eff([=](State& s, const Params&) {
+          s[p] = false;
+          s[q] = true;
+        });
+    c.internal("back")
+        .pre([=](const State& s, const Params&) { return !s[p] && s[q]; })
+        .eff([=](State& s, const Params&) {
+          s[p] = true;
+          s[q] = false;
+        });
+    c.trajectories([](State&) {});
+    const tioa::Automaton u = tioa::U(c);
+    CHECK_FALSE(acyclic_proved(u));
+    CHECK(stabilise_both_ways(u, [](const State&) { return true; }).zero_time_forever == 2);
+  }
+}
