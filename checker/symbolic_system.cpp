@@ -2,9 +2,6 @@
 
 #include "checker/symbolic_acyclic.hpp"
 #include "tioa/action_footprints.hpp"
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 
 namespace checker::symbolic {
 
@@ -120,9 +117,6 @@ bdd System::zero_time_forever(const bdd& within) const {
   if (zero_time_acyclic())
     return bddfalse;
   // The greatest set of states of `within` that each have a zero-time step into it.
-  const bool no_reorder = std::getenv("NOREORDER");
-  if (no_reorder)
-    bdd_disable_reorder();
   bdd keep = within & !settled_, before;
   do {
     if (stop_ && stop_())
@@ -132,15 +126,7 @@ bdd System::zero_time_forever(const bdd& within) const {
     for (const StepRelation& step : zero_time_)
       onward |= step.preimage(keep);
     keep &= onward;
-    if (std::getenv("SYMTRACE")) {
-      static const auto t0 = std::chrono::steady_clock::now();
-      std::fprintf(stderr, "[%.1fs] forever: keep %d nodes, total %d\n",
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
-                   bdd_nodecount(keep), bdd_getnodenum());
-    }
   } while (keep != before);
-  if (no_reorder)
-    bdd_enable_reorder();
   return keep;
 }
 
