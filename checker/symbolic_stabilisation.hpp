@@ -16,8 +16,10 @@
 //
 // Time-locks (states from which no tick can come) and states from which zero-time steps can
 // go on for ever are found too: an execution that stops time is not one the layers judge, so
-// the caller must not claim more than "no such state" allows. The start state of a worst
-// case is picked by going back through the layers.
+// the caller must not claim more than "no such state" allows. Both are cheap when the
+// zero-time steps are proved free of cycles (symbolic_acyclic.hpp) and no reachable state
+// is stuck: then there is neither. The start state of a worst case is picked by going back
+// through the layers.
 
 #include <cstdint>
 #include <optional>
