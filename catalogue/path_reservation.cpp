@@ -253,9 +253,9 @@ ModelDefinition path_reservation_definition() {
     }
     return m;
   };
-  // Every scenario but pinwheel (1.1 million states, tests/models/path_reservation/),
-  // each property; the verdicts of head-on and late-joiner are findings P1 and P2, those
-  // of range-edge finding P3 (README).
+  // Every scenario but pinwheel (1.1 million states) and convoy-5x2 (tests/catalogue/
+  // path_reservation/), each property; the verdicts of head-on and late-joiner are findings P1 and
+  // P2, those of range-edge finding P3 (README).
   using checker::Verdict;
   const auto entry = [](const char* scenario, const char* property, Verdict expected,
                         const char* variant = "paper") {
@@ -264,12 +264,14 @@ ModelDefinition path_reservation_definition() {
       params.emplace("variant", ParamValue::choice(variant));
     return SuiteEntry{params, property, expected};
   };
-  for (const char* scenario : {"crossing", "head-on", "convoy", "cycle", "late-joiner"})
+  for (const char* scenario :
+       {"crossing", "head-on", "convoy", "cycle", "late-joiner", "convoy-3x2"})
     for (const char* property : {"mutual-exclusion", "integrity", "no-collision"})
       d.suite.push_back(entry(scenario, property, Verdict::holds));
   for (const char* scenario : {"crossing", "convoy", "cycle"})
     d.suite.push_back(entry(scenario, "progress", Verdict::holds));
-  for (const char* scenario : {"head-on", "late-joiner"})
+  // convoy-3x2: finding P7 (an Overlap list stranded out of range).
+  for (const char* scenario : {"head-on", "late-joiner", "convoy-3x2"})
     d.suite.push_back(entry(scenario, "progress", Verdict::violated));
   // Finding P3: Definition 4's closed disk lets two robots that cannot hear each other
   // reserve a common cell.

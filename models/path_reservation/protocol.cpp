@@ -148,15 +148,19 @@ KindMask reads(const ProtocolOptions& options, Phase at) {
   return mask;
 }
 
-// §3: Discover_i pings every robot within C (the control channel reaches them all).
+// §3: Discover_i pings every robot within C (the control channel reaches them all), from
+// where R_i stands: the start of its chunk. The phase is set first, so that position_of
+// reads it as discovering: between two chunks the chunk number has already moved on, and
+// read as `released` it would give the end of the new chunk (a bug until 2026-12-07, found
+// on convoy-3x2: a Discover missed a robot 3 cells away).
 void start_discover(const Geometry& g, const Vars& v, const ProtocolOptions& options, State& s,
                     int i) {
+  s[v.phase[i]] = Phase::discovering;
   const Cell at = position_of(g, v, s, i);
   int in_range = 0;
   for (int j = 1; j <= static_cast<int>(g.scenario.paths.size()); ++j)
     if (j != i && within_range(g, options, at, position_of(g, v, s, j)))
       in_range |= bit(j);
-  s[v.phase[i]] = Phase::discovering;
   s[v.pings[i]] = in_range;
 }
 

@@ -60,6 +60,28 @@ const std::vector<Scenario>& scenarios() {
        4,
        7,
        {{{0, 1}, {3, 1}}, {{2, 0}, {2, 3}}, {{3, 2}, {0, 2}}, {{1, 3}, {1, 0}}}},
+      // Convoys with two chunks each (issue 16). Each robot hears the robots 2 and 4 cells
+      // ahead and behind (C = 5) until they pull apart. convoy-3x2 is the smallest
+      // instance of the deadlocks README "Convoys" describes; convoy-5x2 (about 10^7
+      // states) is explored completely in under a minute on two cores.
+      {"convoy-3x2",
+       "three robots in a corridor with two chunks each, each following the one ahead into "
+       "the cell it leaves",
+       9,
+       1,
+       5,
+       {{{4, 0}, {6, 0}, {8, 0}}, {{2, 0}, {4, 0}, {6, 0}}, {{0, 0}, {2, 0}, {4, 0}}}},
+      {"convoy-5x2",
+       "five robots in a corridor with two chunks each, each following the one ahead into "
+       "the cell it leaves",
+       13,
+       1,
+       5,
+       {{{8, 0}, {10, 0}, {12, 0}},
+        {{6, 0}, {8, 0}, {10, 0}},
+        {{4, 0}, {6, 0}, {8, 0}},
+        {{2, 0}, {4, 0}, {6, 0}},
+        {{0, 0}, {2, 0}, {4, 0}}}},
   };
   return all;
 }

@@ -23,7 +23,7 @@ struct Pin {
 const Pin pins[] = {
     {"crossing", 60, 90, Verdict::holds},           {"head-on", 220, 342, Verdict::violated},
     {"convoy", 1802, 4882, Verdict::holds},         {"cycle", 2475, 7224, Verdict::holds},
-    {"late-joiner", 2915, 7929, Verdict::violated},
+    {"late-joiner", 2915, 7929, Verdict::violated}, {"convoy-3x2", 9376, 25201, Verdict::violated},
 };
 
 // The same, as the model was before its channels held several messages (issue 16): one
@@ -120,6 +120,60 @@ TEST_CASE("path-reservation: finding P1, head-on robots wait for each other fore
   CHECK(r.trace->length() == 15);
   // The AfterMe R2 sent is dropped by R1, which has already taken R2's request as msg_2.
   CHECK(r.trace->steps.back().action == "receive_AfterMe(2,1)");
+}
+
+namespace {
+
+// The value of `variable`, as reports print it, in the last state of r's trace.
+std::string last_value(const checker::PropertyResult& r, const std::string& variable,
+                       const std::vector<std::string>& settings) {
+  const auto& definition = catalogue::builtin_models().find("path-reservation");
+  std::vector<std::string> all = settings;
+  all.push_back("scenario=convoy-3x2");
+  const auto instance = definition.build(catalogue::resolve_params(definition, all));
+  const auto* info = instance.system.layout().find(variable);
+  REQUIRE(info);
+  const auto& last = r.trace->steps.back();
+  return info->render_code(tioa::State(last.state.data(), 0).code(info->slot()));
+}
+
+} // namespace
+
+TEST_CASE("path-reservation: finding P6, a convoy waits for a release that never comes",
+          "[path-reservation]") {
+  // The most charitable reading: round tags, the literal msg_j rule, FIFO channels,
+  // messages delivered at any distance. R3 learns from R2's AfterMe list that R2 is
+  // after R1, so (the transitive reading of Algorithm 3 lines 6-7) R3 is after R1 too;
+  // but R1, which never had R3 in its group, has released and finished.
+  const std::vector<std::string> readings{"variant=round-tags", "msg_rule=any-zone",
+                                          "channels=fifo", "delivery=anywhere"};
+  const auto r = run("convoy-3x2", "progress-unless-detected", readings);
+  REQUIRE(r.verdict == Verdict::violated);
+  REQUIRE(r.trace);
+  CHECK(r.trace_kind == "deadlock");
+  CHECK(last_value(r, "phase[1]", readings) == "done");
+  CHECK(last_value(r, "phase[2]", readings) == "done");
+  CHECK(last_value(r, "phase[3]", readings) == "waiting");
+  CHECK(last_value(r, "WLAfter_to[3]", readings) == "{R1, R2}");
+  CHECK(last_value(r, "released[3]", readings) == "{R2}");
+}
+
+TEST_CASE("path-reservation: finding P7, an Overlap list stranded out of range",
+          "[path-reservation]") {
+  // The default readings (delivery within C): R1 reserves, goes and finishes before R2
+  // has read R1's Overlap list; R1 ends 6 cells from R2 (C = 5), so the list never passes.
+  const auto r = run("convoy-3x2", "progress");
+  REQUIRE(r.verdict == Verdict::violated);
+  REQUIRE(r.trace);
+  CHECK(r.trace_kind == "deadlock");
+  CHECK(last_value(r, "phase[1]", {}) == "done");
+  CHECK(last_value(r, "phase[2]", {}) == "exchanging");
+  CHECK(last_value(r, "net[1][2][0].kind", {}) == "Overlap");
+  // Delivered at any distance, the list passes and this deadlock is gone (P1 remains:
+  // the trace is another one).
+  const auto anywhere = run("convoy-3x2", "progress", {"delivery=anywhere"});
+  REQUIRE(anywhere.verdict == Verdict::violated);
+  CHECK(anywhere.trace->steps.back().action == "receive_AfterMe(2,3)");
 }
 
 TEST_CASE("path-reservation: the scenarios are checked, bad ones refused in one line",
