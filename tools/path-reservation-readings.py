@@ -43,9 +43,12 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("tool", nargs="?", default="build/cli/tioa-check")
     parser.add_argument("--scenarios",
-                        default="crossing,head-on,convoy,cycle,late-joiner,range-edge,pinwheel")
+                        default="crossing,head-on,convoy,cycle,late-joiner,range-edge,pinwheel,"
+                                "convoy-3x2")
     parser.add_argument("--threads", type=int, default=2)
-    parser.add_argument("--where", default="", help="only the readings with these values")
+    parser.add_argument("--where", default="",
+                        help="only the readings with these values; a parameter outside the "
+                             "table (delivery=anywhere) is set on every run")
     parser.add_argument("--no-header", action="store_true")
     args = parser.parse_args()
     scenarios = args.scenarios.split(",")
@@ -55,8 +58,9 @@ def main():
         print("| --- " * (5 + len(scenarios)) + "|")
     for values in itertools.product(*[choices for _, choices in READINGS]):
         reading = list(zip([name for name, _ in READINGS], values))
-        if any(dict(reading)[k] != v for k, v in where.items()):
+        if any(k in dict(reading) and dict(reading)[k] != v for k, v in where.items()):
             continue
+        reading += [(k, v) for k, v in where.items() if k not in dict(reading)]
         cells = [cell(args.tool, s, reading, args.threads) for s in scenarios]
         print("| " + " | ".join(values) + " | " + " | ".join(f"`{c}`" if c != "refused" else c
                                                               for c in cells) + " |",
