@@ -432,13 +432,20 @@ void Builder::discover(tioa::Automaton& a) {
           s[v.known_zone[i][j]] = s[v.chunk[j]];
         if (options.variant != Variant::round_tags)
           return;
-        // With round tags, the round whose request will be msg_j.
+        // With round tags, the round whose request will be msg_j: 0 before R_j starts; its
+        // current chunk while it discovers or negotiates it; the next chunk once that
+        // negotiation is over (exchanging, waiting, moving, between chunks). Then R_j's
+        // request of the current round, if it sent R_i one, has been taken already: R_j
+        // has msg_i, which is R_i's answer to that request, or R_i's request, taken as
+        // msg_i, in a round of R_i that could end only with R_j's request as its msg_j.
+        // Naming the current round there left R_i waiting for a request it had taken in
+        // an earlier round (convoy-3x2, README "Convoys"; a fix of 2026-12-07).
+        const bool negotiated = at == Phase::exchanging || at == Phase::waiting ||
+                                at == Phase::moving || at == Phase::released;
         if (at == Phase::done)
           s.set_bottom(v.named[i][j]);
         else
-          s[v.named[i][j]] = at == Phase::idle       ? 0
-                             : at == Phase::released ? s[v.chunk[j]] + 1
-                                                     : s[v.chunk[j]];
+          s[v.named[i][j]] = at == Phase::idle ? 0 : negotiated ? s[v.chunk[j]] + 1 : s[v.chunk[j]];
       });
   // Algorithm 1 lines 1 and 11: G_i is determined; request(Zone_i) to every member.
   a.internal("discover_end", {robot_i})

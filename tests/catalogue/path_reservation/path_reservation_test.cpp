@@ -79,6 +79,19 @@ TEST_CASE("path-reservation: the four robots of pinwheel (1 150 528 states) stay
   CHECK(r.edges == 6094424);
 }
 
+// [long] (opt-in: ctest -L long): five robots, explored completely (README, "Scenarios and
+// verdicts"; several minutes on two threads).
+TEST_CASE("path-reservation: five robots of convoy-5x2, every state explored",
+          "[path-reservation][long]") {
+  const auto safe = run("convoy-5x2", "mutual-exclusion");
+  CHECK(safe.verdict == Verdict::holds);
+  CHECK(safe.states == 35346501);
+  CHECK(safe.edges == 187569533);
+  const auto progress = run("convoy-5x2", "progress");
+  CHECK(progress.verdict == Verdict::violated);
+  CHECK(progress.trace_kind == "deadlock");
+}
+
 TEST_CASE("path-reservation: releasing before reserving breaks every safety property",
           "[path-reservation]") {
   for (const char* property : {"mutual-exclusion", "integrity", "no-collision"}) {
