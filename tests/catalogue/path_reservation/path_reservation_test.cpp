@@ -3,6 +3,10 @@
 // variant shows each safety check failing; the findings P1 and P2 of the README replayed.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
 #include "catalogue/builtin.hpp"
 #include "catalogue/registry.hpp"
 #include "tests/catalogue/path_reservation/run_check.hpp"
@@ -90,6 +94,53 @@ TEST_CASE("path-reservation: five robots of convoy-5x2, every state explored",
   const auto progress = run("convoy-5x2", "progress");
   CHECK(progress.verdict == Verdict::violated);
   CHECK(progress.trace_kind == "deadlock");
+}
+
+namespace {
+
+// Runs `property` on the scenario in `file` (path-reservation's scenario_file).
+checker::PropertyResult run_file(const std::string& file, const std::string& property) {
+  const auto& definition = catalogue::builtin_models().find("path-reservation");
+  const auto instance =
+      definition.build(catalogue::resolve_params(definition, {"scenario_file=" + file}));
+  for (const auto& p : instance.properties)
+    if (p.name == property) {
+      checker::ExploreOptions options;
+      options.threads = 2;
+      return checker::run_property(instance.system, p, options);
+    }
+  throw std::logic_error("test: no property " + property);
+}
+
+} // namespace
+
+// Robots in corridors C apart never hear each other, so the state graph of k copies of
+// head-on is the product of k copies of head-on's (220 states, 342 edges): 220^k states
+// and k * 342 * 220^(k-1) edges, an independent check of the explorer's counts.
+TEST_CASE("path-reservation: two head-on pairs out of range multiply", "[path-reservation]") {
+  const auto file = std::filesystem::temp_directory_path() / "tioa-two-corridors.txt";
+  {
+    std::ofstream out(file);
+    out << "plane 5 6\nrange 5\n"
+        << "robot (0,0) (2,0) (4,0)\nrobot (4,0) (2,0) (0,0)\n"
+        << "robot (0,5) (2,5) (4,5)\nrobot (4,5) (2,5) (0,5)\n";
+  }
+  const auto r = run_file(file.string(), "mutual-exclusion");
+  std::filesystem::remove(file);
+  CHECK(r.verdict == Verdict::holds);
+  CHECK(r.states == 220u * 220u);
+  CHECK(r.edges == 2u * 342u * 220u);
+}
+
+// [long]: the same with six robots (scenarios/three-corridors.txt; about a minute).
+TEST_CASE("path-reservation: three head-on pairs out of range multiply, six robots",
+          "[path-reservation][long]") {
+  const auto r = run_file(std::string(TIOA_SOURCE_DIR) +
+                              "/models/path_reservation/scenarios/three-corridors.txt",
+                          "mutual-exclusion");
+  CHECK(r.verdict == Verdict::holds);
+  CHECK(r.states == 220u * 220u * 220u);
+  CHECK(r.edges == 3u * 342u * 220u * 220u);
 }
 
 TEST_CASE("path-reservation: releasing before reserving breaks every safety property",
