@@ -18,14 +18,27 @@ double Progress::elapsed() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
-void Progress::update(std::uint64_t states, std::uint64_t frontier, std::uint32_t depth) {
+bool Progress::due() {
   if (!enabled_)
-    return;
+    return false;
   const auto now = std::chrono::steady_clock::now();
   if (now - start_ < std::chrono::seconds(1) || now - last_ < std::chrono::milliseconds(200))
-    return;
+    return false;
   last_ = now;
   shown_ = true;
+  return true;
+}
+
+void Progress::show(const std::string& status) {
+  if (!due())
+    return;
+  std::fprintf(stderr, "\r\033[K%s: %s, %.1f s", task_.c_str(), status.c_str(), elapsed());
+  std::fflush(stderr);
+}
+
+void Progress::update(std::uint64_t states, std::uint64_t frontier, std::uint32_t depth) {
+  if (!due())
+    return;
   const double seconds = elapsed();
   std::fprintf(stderr, "\r\033[K%s: %llu states, frontier %llu, depth %u, %.1f s, %.2f M states/s",
                task_.c_str(), static_cast<unsigned long long>(states),

@@ -3,6 +3,7 @@
 // terminal and the run has lasted more than a second.
 
 #include <chrono>
+#include <cstdint>
 #include <string>
 
 namespace checker {
@@ -12,9 +13,13 @@ public:
   Progress(bool enabled, std::string task);
   ~Progress();
   void update(std::uint64_t states, std::uint64_t frontier, std::uint32_t depth);
+  // Any other status ("time layer 3: zero-time closure, round 12, ..."), the same way.
+  void show(const std::string& status);
   double elapsed() const;
 
 private:
+  bool due(); // enabled, past the first second, and 200 ms since the last line
+
   bool enabled_;
   bool shown_ = false;
   std::string task_;

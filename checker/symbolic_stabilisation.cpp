@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace checker::symbolic {
 
@@ -10,6 +11,7 @@ namespace {
 // A start state with an execution that is in `target` (a set of layer k's states) at time k.
 std::vector<Word> start_through_layers(const System& system, const std::vector<bdd>& layers,
                                        const bdd& start, bdd target, std::size_t k) {
+  system.set_stage("the way back to a start");
   // Each layer is closed under zero-time steps, so the way back stays inside it.
   for (; k > 0; --k)
     target = system.tick_preimage(system.back_zero_time_closure(target, layers[k]), layers[k - 1]);
@@ -24,6 +26,7 @@ std::vector<Word> start_through_layers(const System& system, const std::vector<b
 void find_time_locks(const System& system, const bdd& start, const bdd& everything,
                      StabilisationResult& r) {
   const Space& space = system.space();
+  system.set_stage("time-locks");
   const bdd forever = system.zero_time_forever(everything);
   const bdd locked = forever == bddfalse && system.stuck(everything) == bddfalse
                          ? bdd(bddfalse)
@@ -40,7 +43,9 @@ void find_time_locks(const System& system, const bdd& start, const bdd& everythi
 void run_layers(const System& system, const bdd& start, const bdd& legal,
                 std::uint64_t witness_after, StabilisationResult& r) {
   const Space& space = system.space();
+  system.set_stage("time layer 0");
   std::vector<bdd> layers{system.zero_time_closure(start)};
+  system.set_stage("everything reachable");
   const bdd everything = system.reach(layers[0]);
   r.reachable = space.count(everything);
   // The least k with A_k inside L: X_k inside L and everything after it too (a layer with a
@@ -49,10 +54,12 @@ void run_layers(const System& system, const bdd& start, const bdd& legal,
   bdd outside_for_ever = bddfalse;
   std::size_t period_start = 0;
   for (std::size_t k = 0;; ++k) {
+    system.set_stage("time layer " + std::to_string(k));
     if (system.stays_within(layers[k], legal)) {
       r.worst = k;
       break;
     }
+    system.set_stage("time layer " + std::to_string(k + 1));
     const bdd next = system.zero_time_closure(system.tick_image(layers[k]));
     const auto seen = std::find(layers.begin(), layers.end(), next);
     if (seen != layers.end()) {
@@ -74,6 +81,7 @@ void run_layers(const System& system, const bdd& start, const bdd& legal,
     const std::size_t late = r.worst ? *r.worst - 1 : period_start;
     const bdd outside = r.worst ? layers[late] & !legal : outside_for_ever;
     r.late_outside = space.count(outside);
+    system.set_stage("the worst start");
     const bdd reaching = r.worst ? outside : system.back_reach(outside) & layers[late];
     r.worst_start = start_through_layers(system, layers, start, reaching, late);
   }

@@ -1,5 +1,7 @@
 #include "checker/symbolic_system.hpp"
 
+#include <cstdio>
+
 #include "checker/symbolic_acyclic.hpp"
 #include "tioa/action_footprints.hpp"
 
@@ -25,7 +27,21 @@ System::System(const Space& space, LearningFigures& figures)
 // grows as the groups before it add states: a group's images reach the next group at once.
 // Settled states take no step: they are never a step's source (their own tick leads back to
 // them, nothing new).
+void System::next_round(const char* fixpoint, std::uint32_t round) const {
+  if (stop_ && stop_())
+    throw Stopped{};
+  if (!report_)
+    return;
+  char nodes[32];
+  std::snprintf(nodes, sizeof nodes, "%.1f M", static_cast<double>(bdd_getnodenum()) / 1e6);
+  report_((stage_.empty() ? "" : stage_ + ": ") + fixpoint + ", round " + std::to_string(round) +
+          ", " + nodes + " BDD nodes");
+}
+
 bdd System::closure(const bdd& set, bool with_tick, bool backward, const bdd& within) const {
+  const char* name = backward ? (with_tick ? "back reach" : "back zero-time closure")
+                              : (with_tick ? "reach" : "zero-time closure");
+  std::uint32_t round = 0;
   bdd all = set, frontier = set;
   const bdd moving = within & !settled_;
   const auto apply = [&](const StepRelation& step) {
@@ -36,8 +52,7 @@ bdd System::closure(const bdd& set, bool with_tick, bool backward, const bdd& wi
     return fresh;
   };
   while (frontier != bddfalse) {
-    if (stop_ && stop_())
-      throw Stopped{};
+    next_round(name, ++round);
     bdd added = bddfalse;
     for (const StepRelation& step : zero_time_)
       added |= apply(step);
@@ -63,9 +78,9 @@ bool System::stays_within(const bdd& set, const bdd& inside) const {
     frontier |= fresh;
     return fresh;
   };
+  std::uint32_t round = 0;
   while (frontier != bddfalse && !left) {
-    if (stop_ && stop_())
-      throw Stopped{};
+    next_round("staying inside", ++round);
     bdd added = bddfalse;
     for (const StepRelation& step : zero_time_)
       added |= apply(step);
@@ -118,9 +133,9 @@ bdd System::zero_time_forever(const bdd& within) const {
     return bddfalse;
   // The greatest set of states of `within` that each have a zero-time step into it.
   bdd keep = within & !settled_, before;
+  std::uint32_t round = 0;
   do {
-    if (stop_ && stop_())
-      throw Stopped{};
+    next_round("zero-time cycles", ++round);
     before = keep;
     bdd onward = bddfalse;
     for (const StepRelation& step : zero_time_)

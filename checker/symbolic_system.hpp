@@ -3,8 +3,10 @@
 // symbolic checks are made of. Fixpoints chain: each step group is applied in turn to the
 // states not yet expanded, including those the groups before it just added.
 
+#include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "checker/symbolic_learning.hpp"
@@ -23,6 +25,11 @@ public:
   const StepRelation& tick() const { return tick_; }
   // Asked at every round of every fixpoint; when it says true, the fixpoint throws Stopped.
   void set_stop(std::function<bool()> stop) { stop_ = std::move(stop); }
+  // Told at every round of every fixpoint what is being computed, for a progress line
+  // (checker/progress.hpp): "time layer 3: closure, round 12, 1.4 M BDD nodes".
+  void set_progress(std::function<void(const std::string&)> report) { report_ = std::move(report); }
+  // What the rounds reported from now on belong to ("time layer 3"); empty: nothing said.
+  void set_stage(std::string stage) const { stage_ = std::move(stage); }
   // States known to stay in the legal set for good (check_stabilisation's `settled`): they
   // take no step, and time passes in them (one tick leads back to the same state). None
   // unless set.
@@ -57,11 +64,15 @@ public:
 
 private:
   bdd closure(const bdd& set, bool with_tick, bool backward, const bdd& within) const;
+  // One round of a fixpoint: asks stop_ (throws Stopped) and tells report_.
+  void next_round(const char* fixpoint, std::uint32_t round) const;
 
   const Space* space_;
   std::vector<StepRelation> zero_time_;
   StepRelation tick_;
   std::function<bool()> stop_;
+  std::function<void(const std::string&)> report_;
+  mutable std::string stage_;
   bdd settled_ = bddfalse;
   mutable std::optional<bool> zero_time_acyclic_;
 };

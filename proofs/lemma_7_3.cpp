@@ -50,7 +50,7 @@ PropertyResult lemma_7_3_symbolically(const VlConfig& c, MWindow window,
   const tioa::StatePredicate legal = l1mc(c, layer, window);
   const ClauseCheck clauses = l1mc_clauses(c, layer, window);
   const std::uint64_t bound = static_cast<std::uint64_t>(c.eps_sample) + 1;
-  SymbolicU u(c, starts, layer, options.limits);
+  SymbolicU u(c, starts, layer, options);
   const bdd in_l1mc = u.conjunction(l1mc_conjuncts(c, layer, window));
   const SymbolicRun run = u.stabilise(u.start(), in_l1mc, bddfalse, bound);
   const SymbolicClaim claim{

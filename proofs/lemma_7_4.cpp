@@ -41,7 +41,7 @@ PropertyResult lemma_7_4_symbolically(const VlConfig& c, MWindow window,
   const KnownLmc known(c, layer, options);
   const tioa::StatePredicate in_lmc = in_measured_lmc(c, layer, window, known);
   const std::uint64_t bound = static_cast<std::uint64_t>(c.delta + c.d + c.e);
-  SymbolicU u(c, starts, layer, options.limits);
+  SymbolicU u(c, starts, layer, options);
   const bdd lmc = u.measured_lmc(c, layer, window, known);
   const bdd l1 = u.start() & u.conjunction(l1mc_conjuncts(c, layer, window));
   const SymbolicRun run = u.stabilise(l1, lmc, lmc, bound);

@@ -63,7 +63,7 @@ PropertyResult theorem_7_5_symbolically(const VlConfig& c, MWindow window,
   const tioa::StatePredicate in_lmc = in_measured_lmc(c, layer, window, known);
   const std::uint64_t bound = static_cast<std::uint64_t>(c.delta + c.d + c.e + c.eps_sample);
   const std::uint64_t no_witness = std::numeric_limits<std::uint64_t>::max();
-  SymbolicU u(c, starts, layer, options.limits);
+  SymbolicU u(c, starts, layer, options);
   const bdd l1 = u.conjunction(l1mc_conjuncts(c, layer, window));
   const bdd lmc = u.measured_lmc(c, layer, window, known);
   const auto text = [](const SymbolicRun& run) {

@@ -12,8 +12,10 @@ namespace vlayer_mc {
 namespace sym = checker::symbolic;
 
 SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
-                     const tioa::Automaton& layer, const checker::Limits& limits)
-    : began_(std::chrono::steady_clock::now()), limits_(limits),
+                     const tioa::Automaton& layer, const checker::ExploreOptions& options)
+    : began_(std::chrono::steady_clock::now()), limits_(options.limits),
+      progress_(options.progress,
+                (options.task.empty() ? "symbolic" : options.task) + " (every start state)"),
       environment_(u_environment(config, starts)),
       session_(std::make_unique<sym::BddSession>(
           std::max(layer.layout().bits(), environment_.layout().bits()))) {
@@ -25,12 +27,15 @@ SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
       stopped_by_ = "the memory limit";
     return !stopped_by_.empty();
   };
+  const auto report = [this](const std::string& status) { progress_.show(status); };
   // R(env): every state the environment reaches with its inputs from the nodes free.
   bdd env_reach;
   {
     const sym::Space env_space(environment_);
     sym::System env_system(env_space, figures_);
     env_system.set_stop(stop);
+    env_system.set_progress(report);
+    env_system.set_stage("R(env)");
     try {
       env_reach = env_system.reach(sym::start_states(env_space, environment_.start()));
     } catch (const sym::Stopped&) {
@@ -45,6 +50,7 @@ SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
   sym::BddSession::reorder_by_variables(layer.layout());
   system_.emplace(*space_, figures_);
   system_->set_stop(stop);
+  system_->set_progress(report);
 }
 
 double SymbolicU::elapsed() const {

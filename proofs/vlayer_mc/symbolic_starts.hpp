@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "checker/options.hpp"
+#include "checker/progress.hpp"
 #include "checker/symbolic_stabilisation.hpp"
 #include "models/vlayer_mc/l1mc.hpp"
 #include "proofs/vlayer_mc/arbitrary_starts.hpp"
@@ -32,10 +33,11 @@ struct SymbolicRun {
 // more stabilisation checks on the same layer. Holds the one BddSession.
 class SymbolicU {
 public:
-  // `layer` is u_layer(config, starts). R(env) may stop at the limits' time or memory
-  // (resident memory, asked at every fixpoint round): stopped().
+  // `layer` is u_layer(config, starts). R(env) may stop at the options' limits of time or
+  // memory (resident memory, asked at every fixpoint round): stopped(). With
+  // options.progress, every fixpoint round redraws a progress line on a terminal.
   SymbolicU(const VlConfig& config, const ArbitraryStarts& starts, const tioa::Automaton& layer,
-            const checker::Limits& limits);
+            const checker::ExploreOptions& options);
 
   bool stopped() const { return !system_; } // R(env) was not finished
   const checker::symbolic::Space& space() const { return *space_; }
@@ -61,6 +63,7 @@ private:
 
   std::chrono::steady_clock::time_point began_;
   checker::Limits limits_;
+  checker::Progress progress_; // (before system_, whose rounds report to it)
   tioa::Automaton environment_;
   std::unique_ptr<checker::symbolic::BddSession> session_; // (every bdd below goes first)
   checker::symbolic::LearningFigures figures_;

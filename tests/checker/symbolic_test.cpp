@@ -2,6 +2,8 @@
 // reachable states, and the same worst stabilisation time from every start state.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include "checker/checks.hpp"
 #include "checker/symbolic_stabilisation.hpp"
 #include "helpers.hpp"
@@ -121,6 +123,28 @@ TEST_CASE("symbolic: the worst time from every start state, as check_stabilisati
     sym::System system(space, figures);
     system.set_stop([] { return true; });
     CHECK(sym::stabilise(system, space.valid(), space.valid(), 0).stopped);
+  }
+  SECTION("every fixpoint round is reported, with its stage") {
+    const tioa::Automaton c = timed_countdown(4);
+    const sym::BddSession session(c.layout().bits());
+    const sym::Space space(c);
+    sym::LearningFigures figures;
+    sym::System system(space, figures);
+    std::vector<std::string> reports;
+    system.set_progress([&](const std::string& status) { reports.push_back(status); });
+    sym::LearningFigures predicate;
+    const bdd in_legal = sym::learn_predicate(space, variable_is(c, "x", 0), predicate);
+    const auto r = sym::stabilise(system, space.valid(), in_legal, 0);
+    CHECK(r.worst == 4u);
+    REQUIRE_FALSE(reports.empty());
+    CHECK(reports.front().rfind("time layer 0: zero-time closure, round 1, ", 0) == 0);
+    CHECK(reports.front().find(" BDD nodes") != std::string::npos);
+    const auto said = [&](const std::string& part) {
+      return std::any_of(reports.begin(), reports.end(),
+                         [&](const std::string& s) { return s.find(part) != std::string::npos; });
+    };
+    CHECK(said("everything reachable: reach, round "));
+    CHECK(said("time layer 4: staying inside, round 1"));
   }
   SECTION("a zero-time cycle outside L") {
     const tioa::Automaton c = timed_countdown(3, true);
