@@ -13,6 +13,7 @@
 
 using checker::Verdict;
 using path_reservation_test::run;
+using path_reservation_test::run_with;
 
 namespace {
 
@@ -96,24 +97,6 @@ TEST_CASE("path-reservation: five robots of convoy-5x2, every state explored",
   CHECK(progress.trace_kind == "deadlock");
 }
 
-namespace {
-
-// Runs `property` on the scenario in `file` (path-reservation's scenario_file).
-checker::PropertyResult run_file(const std::string& file, const std::string& property) {
-  const auto& definition = catalogue::builtin_models().find("path-reservation");
-  const auto instance =
-      definition.build(catalogue::resolve_params(definition, {"scenario_file=" + file}));
-  for (const auto& p : instance.properties)
-    if (p.name == property) {
-      checker::ExploreOptions options;
-      options.threads = 2;
-      return checker::run_property(instance.system, p, options);
-    }
-  throw std::logic_error("test: no property " + property);
-}
-
-} // namespace
-
 // Robots in corridors C apart never hear each other, so the state graph of k copies of
 // head-on is the product of k copies of head-on's (220 states, 342 edges): 220^k states
 // and k * 342 * 220^(k-1) edges, an independent check of the explorer's counts.
@@ -125,7 +108,7 @@ TEST_CASE("path-reservation: two head-on pairs out of range multiply", "[path-re
         << "robot (0,0) (2,0) (4,0)\nrobot (4,0) (2,0) (0,0)\n"
         << "robot (0,5) (2,5) (4,5)\nrobot (4,5) (2,5) (0,5)\n";
   }
-  const auto r = run_file(file.string(), "mutual-exclusion");
+  const auto r = run_with({"scenario_file=" + file.string()}, "mutual-exclusion");
   std::filesystem::remove(file);
   CHECK(r.verdict == Verdict::holds);
   CHECK(r.states == 220u * 220u);
@@ -135,8 +118,8 @@ TEST_CASE("path-reservation: two head-on pairs out of range multiply", "[path-re
 // [long]: the same with six robots (scenarios/three-corridors.txt; about a minute).
 TEST_CASE("path-reservation: three head-on pairs out of range multiply, six robots",
           "[path-reservation][long]") {
-  const auto r = run_file(std::string(TIOA_SOURCE_DIR) +
-                              "/models/path_reservation/scenarios/three-corridors.txt",
+  const auto r = run_with({std::string("scenario_file=") + TIOA_SOURCE_DIR +
+                           "/models/path_reservation/scenarios/three-corridors.txt"},
                           "mutual-exclusion");
   CHECK(r.verdict == Verdict::holds);
   CHECK(r.states == 220u * 220u * 220u);
@@ -207,8 +190,8 @@ TEST_CASE("path-reservation: finding P6, a convoy waits for a release that never
           "[path-reservation]") {
   // The most charitable reading: round tags, the literal msg_j rule, FIFO channels,
   // messages delivered at any distance. R3 learns from R2's AfterMe list that R2 is
-  // after R1, so (the transitive reading of Algorithm 3 lines 6-7) R3 is after R1 too;
-  // but R1, which never had R3 in its group, has released and finished.
+  // after R1, so (Algorithm 2 line 7) R3 is after R1 too; but R1, which never had R3 in
+  // its group, has released and finished.
   const std::vector<std::string> readings{"variant=round-tags", "msg_rule=any-zone",
                                           "channels=fifo", "delivery=anywhere"};
   const auto r = run("convoy-3x2", "progress-unless-detected", readings);

@@ -13,10 +13,11 @@
 
 namespace path_reservation_test {
 
-inline checker::PropertyResult run(const std::string& scenario, const std::string& property,
-                                   std::vector<std::string> settings = {}) {
+// Runs one property with the parameters as given ("scenario_file=..." in place of a
+// scenario).
+inline checker::PropertyResult run_with(const std::vector<std::string>& settings,
+                                        const std::string& property) {
   const auto& definition = catalogue::builtin_models().find("path-reservation");
-  settings.push_back("scenario=" + scenario);
   const auto instance = definition.build(catalogue::resolve_params(definition, settings));
   for (const auto& p : instance.properties)
     if (p.name == property) {
@@ -25,6 +26,12 @@ inline checker::PropertyResult run(const std::string& scenario, const std::strin
       return checker::run_property(instance.system, p, options);
     }
   throw std::logic_error("test: no property " + property);
+}
+
+inline checker::PropertyResult run(const std::string& scenario, const std::string& property,
+                                   std::vector<std::string> settings = {}) {
+  settings.push_back("scenario=" + scenario);
+  return run_with(settings, property);
 }
 
 } // namespace path_reservation_test
