@@ -23,10 +23,6 @@ System::System(const Space& space, LearningFigures& figures)
     : space_(&space), zero_time_(learn_actions(space, figures)), tick_(learn_tick(space, figures)) {
 }
 
-// Chained over the groups, each applied to the states not yet expanded (the frontier), which
-// grows as the groups before it add states: a group's images reach the next group at once.
-// Settled states take no step: they are never a step's source (their own tick leads back to
-// them, nothing new).
 void System::next_round(const char* fixpoint, std::uint32_t round) const {
   if (stop_ && stop_())
     throw Stopped{};
@@ -38,6 +34,10 @@ void System::next_round(const char* fixpoint, std::uint32_t round) const {
           ", " + nodes + " BDD nodes");
 }
 
+// Chained over the groups, each applied to the states not yet expanded (the frontier), which
+// grows as the groups before it add states: a group's images reach the next group at once.
+// Settled states take no step: they are never a step's source (their own tick leads back to
+// them, nothing new).
 bdd System::closure(const bdd& set, bool with_tick, bool backward, const bdd& within) const {
   const char* name = backward ? (with_tick ? "back reach" : "back zero-time closure")
                               : (with_tick ? "reach" : "zero-time closure");

@@ -26,7 +26,7 @@ public:
   // Asked at every round of every fixpoint; when it says true, the fixpoint throws Stopped.
   void set_stop(std::function<bool()> stop) { stop_ = std::move(stop); }
   // Told at every round of every fixpoint what is being computed, for a progress line
-  // (checker/progress.hpp): "time layer 3: closure, round 12, 1.4 M BDD nodes".
+  // (checker/progress.hpp): "time layer 3: zero-time closure, round 12, 1.4 M BDD nodes".
   void set_progress(std::function<void(const std::string&)> report) { report_ = std::move(report); }
   // What the rounds reported from now on belong to ("time layer 3"); empty: nothing said.
   void set_stage(std::string stage) const { stage_ = std::move(stage); }

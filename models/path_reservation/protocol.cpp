@@ -439,7 +439,7 @@ void Builder::discover(tioa::Automaton& a) {
         // has msg_i, which is R_i's answer to that request, or R_i's request, taken as
         // msg_i, in a round of R_i that could end only with R_j's request as its msg_j.
         // Naming the current round there left R_i waiting for a request it had taken in
-        // an earlier round (convoy-3x2, README "Convoys"; a fix of 2026-12-07).
+        // an earlier round (convoy-3x2, README "P6"; a fix of 2026-12-07).
         const bool negotiated = at == Phase::exchanging || at == Phase::waiting ||
                                 at == Phase::moving || at == Phase::released;
         if (at == Phase::done)

@@ -61,9 +61,9 @@ const std::vector<Scenario>& scenarios() {
        7,
        {{{0, 1}, {3, 1}}, {{2, 0}, {2, 3}}, {{3, 2}, {0, 2}}, {{1, 3}, {1, 0}}}},
       // Convoys with two chunks each (issue 16). Each robot hears the robots 2 and 4 cells
-      // ahead and behind (C = 5) until they pull apart. convoy-3x2 is the smallest
-      // instance of the deadlocks README "Convoys" describes; convoy-5x2 (about 10^7
-      // states) is explored completely in under a minute on two cores.
+      // ahead and behind (C = 5) until they pull apart. convoy-3x2 shows findings P6 and P7
+      // (README, "Findings"); convoy-5x2 (3.5·10^7 states) is explored completely in 3 to
+      // 6 minutes a property on two cores.
       {"convoy-3x2",
        "three robots in a corridor with two chunks each, each following the one ahead into "
        "the cell it leaves",
