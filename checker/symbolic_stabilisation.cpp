@@ -8,15 +8,31 @@ namespace checker::symbolic {
 
 namespace {
 
+// One state of `set` (not empty), as a set.
+bdd one_state(const Space& space, const bdd& set) {
+  const std::vector<Word> state = space.pick(set);
+  return space.state_set(state.data());
+}
+
 // A start state with an execution that is in `target` (a set of layer k's states) at time k.
+// `entries[k]` are the states a tick from layer k - 1 enters (the start states for k = 0),
+// whose zero-time closure is layer k. Back from one state of `target`, one state at a time:
+// the nearest entry of its layer that leads to it (each layer is closed under zero-time
+// steps, so the way back stays inside it), a state of the layer before from which one tick
+// enters there, and so on. Each backward search stops at its first round that meets the
+// entries (System::nearest_back): the whole back closure of a large target is not needed.
 std::vector<Word> start_through_layers(const System& system, const std::vector<bdd>& layers,
-                                       const bdd& start, bdd target, std::size_t k) {
+                                       const std::vector<bdd>& entries, const bdd& target,
+                                       std::size_t k) {
   system.set_stage("the way back to a start");
-  // Each layer is closed under zero-time steps, so the way back stays inside it.
-  for (; k > 0; --k)
-    target = system.tick_preimage(system.back_zero_time_closure(target, layers[k]), layers[k - 1]);
-  const bdd starts = system.back_zero_time_closure(target, layers[0]) & start;
-  return starts == bddfalse ? std::vector<Word>{} : system.space().pick(starts);
+  const Space& space = system.space();
+  bdd here = one_state(space, target);
+  for (; k > 0; --k) {
+    const bdd entered = one_state(space, system.nearest_back(here, false, layers[k], entries[k]));
+    here = one_state(space, system.tick_preimage(entered, layers[k - 1]));
+  }
+  const bdd starts = system.nearest_back(here, false, layers[0], entries[0]);
+  return starts == bddfalse ? std::vector<Word>{} : space.pick(starts);
 }
 
 // The time-locks and endless zero-time runs among `everything` (closed under steps). With no
@@ -34,7 +50,7 @@ void find_time_locks(const System& system, const bdd& start, const bdd& everythi
   r.time_locked = space.count(locked);
   r.zero_time_forever = space.count(forever);
   if (locked != bddfalse || forever != bddfalse) {
-    const bdd starts = system.back_reach(locked | forever) & start;
+    const bdd starts = system.nearest_back(locked | forever, true, bddtrue, start);
     if (starts != bddfalse)
       r.time_lock_start = space.pick(starts);
   }
@@ -44,6 +60,7 @@ void run_layers(const System& system, const bdd& start, const bdd& legal,
                 std::uint64_t witness_after, StabilisationResult& r) {
   const Space& space = system.space();
   system.set_stage("time layer 0");
+  std::vector<bdd> entries{start}; // what a tick enters, before the zero-time closure
   std::vector<bdd> layers{system.zero_time_closure(start)};
   system.set_stage("everything reachable");
   const bdd everything = system.reach(layers[0]);
@@ -60,7 +77,8 @@ void run_layers(const System& system, const bdd& start, const bdd& legal,
       break;
     }
     system.set_stage("time layer " + std::to_string(k + 1));
-    const bdd next = system.zero_time_closure(system.tick_image(layers[k]));
+    const bdd entered = system.tick_image(layers[k]);
+    const bdd next = system.zero_time_closure(entered);
     const auto seen = std::find(layers.begin(), layers.end(), next);
     if (seen != layers.end()) {
       period_start = static_cast<std::size_t>(seen - layers.begin());
@@ -71,6 +89,7 @@ void run_layers(const System& system, const bdd& start, const bdd& legal,
       outside_for_ever = period & !legal;
       break;
     }
+    entries.push_back(entered);
     layers.push_back(next);
   }
   r.layers = layers.size();
@@ -82,8 +101,9 @@ void run_layers(const System& system, const bdd& start, const bdd& legal,
     const bdd outside = r.worst ? layers[late] & !legal : outside_for_ever;
     r.late_outside = space.count(outside);
     system.set_stage("the worst start");
-    const bdd reaching = r.worst ? outside : system.back_reach(outside) & layers[late];
-    r.worst_start = start_through_layers(system, layers, start, reaching, late);
+    const bdd reaching =
+        r.worst ? outside : system.nearest_back(outside, true, bddtrue, layers[late]);
+    r.worst_start = start_through_layers(system, layers, entries, reaching, late);
   }
   find_time_locks(system, start, everything, r);
 }

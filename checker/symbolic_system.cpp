@@ -38,11 +38,15 @@ void System::next_round(const char* fixpoint, std::uint32_t round) const {
 // grows as the groups before it add states: a group's images reach the next group at once.
 // Settled states take no step: they are never a step's source (their own tick leads back to
 // them, nothing new).
-bdd System::closure(const bdd& set, bool with_tick, bool backward, const bdd& within) const {
+bdd System::closure(const bdd& set, bool with_tick, bool backward, const bdd& within,
+                    const bdd& goal) const {
   const char* name = backward ? (with_tick ? "back reach" : "back zero-time closure")
                               : (with_tick ? "reach" : "zero-time closure");
   std::uint32_t round = 0;
   bdd all = set, frontier = set;
+  const bool stop_at_goal = goal != bddfalse;
+  if (stop_at_goal && (set & goal) != bddfalse)
+    return set & goal;
   const bdd moving = within & !settled_;
   const auto apply = [&](const StepRelation& step) {
     const bdd fresh = backward ? step.preimage(frontier) & moving & !all
@@ -59,8 +63,10 @@ bdd System::closure(const bdd& set, bool with_tick, bool backward, const bdd& wi
     if (with_tick)
       added |= apply(tick_);
     frontier = added;
+    if (stop_at_goal && (added & goal) != bddfalse)
+      return added & goal;
   }
-  return all;
+  return stop_at_goal ? bdd(bddfalse) : all;
 }
 
 bool System::stays_within(const bdd& set, const bdd& inside) const {
@@ -101,6 +107,10 @@ bdd System::reach(const bdd& set) const {
 }
 bdd System::back_reach(const bdd& set) const {
   return closure(set, true, true, bddtrue);
+}
+
+bdd System::nearest_back(const bdd& set, bool with_tick, const bdd& within, const bdd& goal) const {
+  return goal == bddfalse ? goal : closure(set, with_tick, true, within, goal);
 }
 
 bdd System::tick_image(const bdd& set) const {

@@ -50,6 +50,10 @@ public:
   // Everything reachable from `set`, ticks included; and everything that reaches it.
   bdd reach(const bdd& set) const;
   bdd back_reach(const bdd& set) const;
+  // The states of `goal` that reach `set` (inside `within`, ticks included when `with_tick`)
+  // in the fewest rounds: the backward closure stops at the first round that meets `goal`
+  // (empty: `goal` never reaches `set`). For a witness, which needs one such state, not all.
+  bdd nearest_back(const bdd& set, bool with_tick, const bdd& within, const bdd& goal) const;
   // The states of `within` from which no tick can ever come (zero-time steps only: the
   // time-locks of a timed automaton).
   bdd time_locks(const bdd& within) const;
@@ -63,7 +67,9 @@ public:
   bdd stuck(const bdd& within) const;
 
 private:
-  bdd closure(const bdd& set, bool with_tick, bool backward, const bdd& within) const;
+  // `goal` (backward only; bddfalse: none): stop at the first round whose states meet it.
+  bdd closure(const bdd& set, bool with_tick, bool backward, const bdd& within,
+              const bdd& goal = bddfalse) const;
   // One round of a fixpoint: asks stop_ (throws Stopped) and tells report_.
   void next_round(const char* fixpoint, std::uint32_t round) const;
 

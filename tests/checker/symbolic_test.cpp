@@ -69,13 +69,27 @@ BothWays stabilise_both_ways(const tioa::Automaton& a, const tioa::StatePredicat
     both.symbolic = r.worst;
     both.time_locked = r.time_locked;
     both.zero_time_forever = r.zero_time_forever;
-    if (r.worst && *r.worst > 0 && r.time_locked == 0) {
+    const auto from = [&](const std::vector<tioa::Word>& start) {
+      return tioa::Start(a, tioa::StartSet::listed(a.layout().bits(), a.words(), start, "picked"));
+    };
+    const bool stops_time = r.time_locked > 0 || r.zero_time_forever > 0;
+    if (r.worst && *r.worst > 0 && !stops_time) {
       // The picked start state reaches the worst time, explored explicitly from it alone
       // (with a time-lock the explicit check reports that instead of a worst time).
       REQUIRE_FALSE(r.worst_start.empty());
-      const tioa::Automaton from_it = tioa::Start(
-          a, tioa::StartSet::listed(a.layout().bits(), a.words(), r.worst_start, "picked"));
-      CHECK(explicit_check(from_it).worst_time == r.worst);
+      CHECK(explicit_check(from(r.worst_start)).worst_time == r.worst);
+    }
+    if (!r.worst && !stops_time) {
+      // Outside L at every time: from the picked start state too.
+      REQUIRE_FALSE(r.worst_start.empty());
+      CHECK_FALSE(explicit_check(from(r.worst_start)).worst_time);
+    }
+    if (stops_time)
+      REQUIRE_FALSE(r.time_lock_start.empty());
+    if (r.time_locked > 0 && r.zero_time_forever == 0) {
+      // The picked start state reaches a time-lock, which the explicit check reports as a
+      // violation (it leaves endless zero-time runs out: they let no time pass).
+      CHECK(explicit_check(from(r.time_lock_start)).verdict == Verdict::violated);
     }
   }
   const PropertyResult r = explicit_check(a);
