@@ -177,3 +177,24 @@ TEST_CASE("vlayer-mc: the first state of a lemma-7.3 trace is a start state of U
   s.set(tioa::find_variable<bool>(system, "VBcast.cn_pending[0]"), true);
   CHECK(vlayer_mc::is_u_start(c, starts, first.data(), 10'000) == std::nullopt);
 }
+
+// [long] (opt-in: ctest -L long; about two minutes): from every start state of U(VLNodes)
+// with the default junk slots (7.63·10^22 of them), decided symbolically (README, D33).
+// With D25 and D26 Lemma 7.3 still fails, 3 against 2, (4b) CN_0 (F5): the counterexample,
+// from the start state the symbolic run picked, replays; with D28 as well it holds.
+TEST_CASE("vlayer-mc lemma-7.3 on 1x1 from every start state with junk slots", "[vlayer][long]") {
+  const auto [r, system] =
+      run_stabilisation("lemma-7.3", {"cols=1", "starts=all", "cn_repair=1", "vn_repair=1"});
+  CHECK(r.verdict == checker::Verdict::violated);
+  CHECK(r.coverage.starts == checker::Starts::all);
+  CHECK(r.worst_time == 3u);
+  CHECK_THAT(r.message, Catch::Contains("breaks (4b) CN_0"));
+  REQUIRE(r.trace);
+  std::string why;
+  CHECK(checker::replay(tioa::SuccessorGenerator(system), *r.trace, &why));
+
+  const auto [repaired, unused] = run_stabilisation(
+      "lemma-7.3", {"cols=1", "starts=all", "cn_repair=1", "vn_repair=1", "filter_targets=1"});
+  CHECK(repaired.verdict == checker::Verdict::holds);
+  CHECK(repaired.worst_time == 2u);
+}
