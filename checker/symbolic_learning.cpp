@@ -19,10 +19,22 @@ using Run = std::function<void(Word* state, Word* trace, std::vector<Outcome>& o
 using Leaf = std::function<void(const Word* state, const std::vector<char>& assigned,
                                 const std::vector<Outcome>& outcomes)>;
 
+// Tells `watch` of every 4096th cube learned for `group` (counted in `cubes`).
+struct Watched {
+  const LearningWatch& watch;
+  const std::string& group;
+  std::uint64_t cubes = 0;
+
+  void count() {
+    if ((++cubes & 4095) == 0 && watch)
+      watch(group, cubes);
+  }
+};
+
 // The Shannon expansion of the header: `run` on `state`, split on the first unassigned
 // variable it read, until it reads none.
 void expand(const Space& space, Word* state, std::vector<char>& assigned, const Run& run,
-            const Leaf& leaf, LearningFigures& figures) {
+            const Leaf& leaf, LearningFigures& figures, Watched* watched = nullptr) {
   std::vector<Word> trace(space.words(), 0);
   std::vector<Outcome> outcomes;
   run(state, trace.data(), outcomes);
@@ -34,6 +46,8 @@ void expand(const Space& space, Word* state, std::vector<char>& assigned, const 
   }
   if (split < 0) {
     ++figures.leaves;
+    if (watched)
+      watched->count();
     leaf(state, assigned, outcomes);
     return;
   }
@@ -41,7 +55,7 @@ void expand(const Space& space, Word* state, std::vector<char>& assigned, const 
   assigned[split] = 1;
   for (std::uint64_t c = 0; c < v.codes; ++c) {
     space.set_code(state, v, c);
-    expand(space, state, assigned, run, leaf, figures);
+    expand(space, state, assigned, run, leaf, figures, watched);
   }
   space.set_code(state, v, 0);
   assigned[split] = 0;
@@ -49,7 +63,7 @@ void expand(const Space& space, Word* state, std::vector<char>& assigned, const 
 
 // The relation of a group that may write `writes`, from the outcomes of `run`.
 bdd learn_relation(const Space& space, const std::string& name, const std::vector<Word>& writes,
-                   const Run& run, LearningFigures& figures) {
+                   const Run& run, LearningFigures& figures, const LearningWatch& watch) {
   std::vector<Word> state(space.words() + 1, 0);
   std::vector<char> assigned(space.variables().size(), 0);
   bdd relation = bddfalse;
@@ -80,7 +94,8 @@ bdd learn_relation(const Space& space, const std::string& name, const std::vecto
     if (!outcomes.empty())
       relation |= space.cube(from, known) & any;
   };
-  expand(space, state.data(), assigned, run, leaf, figures);
+  Watched watched{watch, name};
+  expand(space, state.data(), assigned, run, leaf, figures, &watched);
   return relation;
 }
 
@@ -129,34 +144,80 @@ bdd StepRelation::preimage(const bdd& set) const {
   return bdd_relprod(relation_, bdd_replace(set, to_next_), written_next_);
 }
 
+namespace {
+
+// The points of an action's box, when they are few enough to learn one by one.
+constexpr double most_points_learned_apart = 4096;
+
+double box_points(const tioa::ActionSignature& sig) {
+  double points = 1;
+  for (const tioa::ParamRange& range : sig.params)
+    points *= range.hi < range.lo ? 0.0 : static_cast<double>(range.hi - range.lo + 1);
+  return points;
+}
+
+// The steps of `t` with parameters `p` (every choice) from `state`, when `p` is a candidate
+// there (every binding allows it: exactly when for_each_candidate would visit it).
+void run_steps(const Space& space, const tioa::Transition& t, const tioa::Params& p, Word* state,
+               Word* trace, std::vector<Outcome>& outcomes) {
+  const tioa::State from(state, 0, trace, space.words());
+  // (An input not enabled is the explicit explorer's error to report: here the state
+  // may be a partial one, whose placeholders decide nothing.)
+  if (!t.enabled(from, p))
+    return;
+  const std::uint32_t choices = t.choice_count(from, p);
+  for (std::uint32_t c = 0; c < choices; ++c) {
+    Outcome o = start_outcome(space, state);
+    tioa::State to(o.state.data(), 0, trace, space.words(), o.writes.data());
+    t.apply(to, p, c);
+    o.state.pop_back();
+    outcomes.push_back(std::move(o));
+  }
+}
+
+} // namespace
+
+// An action whose parameters are bound to the state (a delivery whose value is the one in
+// its slot, for one slot per region) reads, over its whole box, every slot its binders
+// read, and the expansion splits on all of them at once: with junk slots on 1x2 a target
+// delivery made millions of cubes. One point of the box at a time reads only its own slot,
+// and the relation is the union of the points' relations (a point is a step exactly where
+// every binding allows it). Actions without bindings, or with large boxes, are learned
+// over their whole box at once, which is cheaper when every point reads the same
+// variables (a guard comparing a parameter with one variable splits on it once).
 StepRelation learn_action(const Space& space, std::size_t action, std::vector<Word> writes,
-                          LearningFigures& figures) {
+                          LearningFigures& figures, const LearningWatch& watch) {
   const tioa::Automaton& a = space.automaton();
   const tioa::Transition& t = a.transitions()[action];
   const tioa::ActionSignature& sig = a.actions()[action];
   writes.resize(space.words(), 0);
-  const Run run = [&](Word* state, Word* trace, std::vector<Outcome>& outcomes) {
-    const tioa::State from(state, 0, trace, space.words());
-    tioa::for_each_candidate(sig, t, from, [&](const tioa::Params& p) {
-      // (An input not enabled is the explicit explorer's error to report: here the state
-      // may be a partial one, whose placeholders decide nothing.)
-      if (!t.enabled(from, p))
+  bdd relation = bddfalse;
+  if (!t.bindings.empty() && box_points(sig) <= most_points_learned_apart) {
+    tioa::for_each_params(sig.params, [&](const tioa::Params& p) {
+      if (sig.accepts && !sig.accepts(p))
         return;
-      const std::uint32_t choices = t.choice_count(from, p);
-      for (std::uint32_t c = 0; c < choices; ++c) {
-        Outcome o = start_outcome(space, state);
-        tioa::State to(o.state.data(), 0, trace, space.words(), o.writes.data());
-        t.apply(to, p, c);
-        o.state.pop_back();
-        outcomes.push_back(std::move(o));
-      }
+      const Run run = [&](Word* state, Word* trace, std::vector<Outcome>& outcomes) {
+        const tioa::State from(state, 0, trace, space.words());
+        for (const tioa::Binding& binding : t.bindings)
+          if (!binding.allows(from, p))
+            return;
+        run_steps(space, t, p, state, trace, outcomes);
+      };
+      relation |= learn_relation(space, sig.name, writes, run, figures, watch);
     });
-  };
-  bdd relation = learn_relation(space, sig.name, writes, run, figures);
+  } else {
+    const Run run = [&](Word* state, Word* trace, std::vector<Outcome>& outcomes) {
+      const tioa::State from(state, 0, trace, space.words());
+      tioa::for_each_candidate(sig, t, from, [&](const tioa::Params& p) {
+        run_steps(space, t, p, state, trace, outcomes);
+      });
+    };
+    relation = learn_relation(space, sig.name, writes, run, figures, watch);
+  }
   return StepRelation(sig.name, space, std::move(writes), std::move(relation));
 }
 
-StepRelation learn_tick(const Space& space, LearningFigures& figures) {
+StepRelation learn_tick(const Space& space, LearningFigures& figures, const LearningWatch& watch) {
   const tioa::Trajectories& time = space.automaton().trajectory();
   std::vector<Word> writes(space.words(), 0);
   bdd relation = bddtrue;
@@ -188,7 +249,7 @@ StepRelation learn_tick(const Space& space, LearningFigures& figures) {
       o.state.pop_back();
       outcomes.push_back(std::move(o));
     };
-    relation &= learn_relation(space, "tick", own, run, figures);
+    relation &= learn_relation(space, "tick", own, run, figures, watch);
   }
   if (!time.timed)
     relation = bddfalse;

@@ -15,6 +15,7 @@
 // (tests/checker/symbolic_test.cpp pins small automata).
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -61,14 +62,19 @@ struct LearningFigures {
   std::uint64_t leaves = 0; // outcomes of the code run, one cube each
 };
 
+// Told now and then while a group is learned (every few thousand cubes): its name and the
+// cubes learned for it so far. It may throw, to stop a learning that takes too long.
+using LearningWatch = std::function<void(const std::string& group, std::uint64_t cubes)>;
+
 // Every step of `action` (every parameter value of its box that its binders and filters
 // admit, every choice); `writes`: what its footprint declares it may write
 // (tioa/action_footprints.hpp).
 StepRelation learn_action(const Space& space, std::size_t action, std::vector<Word> writes,
-                          LearningFigures& figures);
+                          LearningFigures& figures, const LearningWatch& watch = {});
 // One tick: the conjunction over the trajectory parts of "this part does not stop time, and
 // evolves" (the parts write disjoint bits: each its own automaton's state).
-StepRelation learn_tick(const Space& space, LearningFigures& figures);
+StepRelation learn_tick(const Space& space, LearningFigures& figures,
+                        const LearningWatch& watch = {});
 // The states that satisfy `predicate` (valid codes only).
 bdd learn_predicate(const Space& space, const tioa::StatePredicate& predicate,
                     LearningFigures& figures);

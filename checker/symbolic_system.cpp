@@ -9,19 +9,35 @@ namespace checker::symbolic {
 
 namespace {
 
-std::vector<StepRelation> learn_actions(const Space& space, LearningFigures& figures) {
+std::vector<StepRelation> learn_actions(const Space& space, LearningFigures& figures,
+                                        const LearningWatch& watch) {
   std::vector<tioa::ActionFootprint> footprints = tioa::action_footprints(space.automaton());
   std::vector<StepRelation> actions;
   for (std::size_t a = 0; a < footprints.size(); ++a)
-    actions.push_back(learn_action(space, a, std::move(footprints[a].writes), figures));
+    actions.push_back(learn_action(space, a, std::move(footprints[a].writes), figures, watch));
   return actions;
+}
+
+// What learning tells: the stop asked (Stopped), and the group and cubes reported.
+LearningWatch watch_learning(const std::function<bool()>& stop,
+                             const std::function<void(const std::string&)>& report) {
+  if (!stop && !report)
+    return {};
+  return [stop, report](const std::string& group, std::uint64_t cubes) {
+    if (stop && stop())
+      throw Stopped{};
+    if (report)
+      report("learning " + group + ", " + std::to_string(cubes) + " cubes");
+  };
 }
 
 } // namespace
 
-System::System(const Space& space, LearningFigures& figures)
-    : space_(&space), zero_time_(learn_actions(space, figures)), tick_(learn_tick(space, figures)) {
-}
+System::System(const Space& space, LearningFigures& figures, std::function<bool()> stop,
+               std::function<void(const std::string&)> report)
+    : space_(&space), zero_time_(learn_actions(space, figures, watch_learning(stop, report))),
+      tick_(learn_tick(space, figures, watch_learning(stop, report))), stop_(std::move(stop)),
+      report_(std::move(report)) {}
 
 void System::next_round(const char* fixpoint, std::uint32_t round) const {
   if (stop_ && stop_())

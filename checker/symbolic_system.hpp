@@ -13,13 +13,17 @@
 
 namespace checker::symbolic {
 
-// Thrown by a fixpoint of a System whose stop condition became true (set_stop).
+// Thrown by a fixpoint of a System whose stop condition became true (set_stop), or by its
+// construction (the stop given to it).
 struct Stopped {};
 
 class System {
 public:
-  // Learns every action and the tick of `space`'s automaton.
-  System(const Space& space, LearningFigures& figures);
+  // Learns every action and the tick of `space`'s automaton. `stop` and `report` are asked
+  // and told while it learns (Stopped when stop says true; "learning tick, 8192 cubes") and
+  // then become set_stop and set_progress.
+  System(const Space& space, LearningFigures& figures, std::function<bool()> stop = {},
+         std::function<void(const std::string&)> report = {});
 
   const Space& space() const { return *space_; }
   const StepRelation& tick() const { return tick_; }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "checker/interrupt.hpp"
 #include "checker/memory_budget.hpp"
 
 #include "models/vlayer_mc/reset_mc.hpp"
@@ -21,7 +22,9 @@ SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
           std::max(layer.layout().bits(), environment_.layout().bits()))) {
   // Asked at every fixpoint round (a single image may still go past the memory limit).
   const auto stop = [this] {
-    if (limits_.out_of_time(elapsed()))
+    if (checker::interrupted())
+      stopped_by_ = "an interrupt (SIGINT or SIGTERM)";
+    else if (limits_.out_of_time(elapsed()))
       stopped_by_ = "the time limit";
     else if (checker::resident_over_limit(limits_))
       stopped_by_ = "the memory limit";
@@ -32,11 +35,9 @@ SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
   bdd env_reach;
   {
     const sym::Space env_space(environment_);
-    sym::System env_system(env_space, figures_);
-    env_system.set_stop(stop);
-    env_system.set_progress(report);
-    env_system.set_stage("R(env)");
     try {
+      sym::System env_system(env_space, figures_, stop, report);
+      env_system.set_stage("R(env)");
       env_reach = env_system.reach(sym::start_states(env_space, environment_.start()));
     } catch (const sym::Stopped&) {
       return;
@@ -48,9 +49,11 @@ SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
   }
   env_reach = bddfalse;
   sym::BddSession::reorder_by_variables(layer.layout());
-  system_.emplace(*space_, figures_);
-  system_->set_stop(stop);
-  system_->set_progress(report);
+  try {
+    system_.emplace(*space_, figures_, stop, report);
+  } catch (const sym::Stopped&) {
+    return; // stopped while learning the steps
+  }
 }
 
 double SymbolicU::elapsed() const {

@@ -9,6 +9,7 @@
 #include "helpers.hpp"
 #include "models/fischer/fischer.hpp"
 #include "models/token_ring/token_ring.hpp"
+#include "tioa/compose.hpp"
 
 using namespace checker;
 using namespace checker_test;
@@ -100,7 +101,49 @@ BothWays stabilise_both_ways(const tioa::Automaton& a, const tioa::StatePredicat
 
 } // namespace
 
+namespace {
+
+// Two slots of values, delivered by a step bound to a slot's value (learned one point of
+// its box at a time), to a receiver with a choice: the relations of a composition whose
+// step reads different variables for different parameters.
+tioa::Automaton bound_delivery() {
+  tioa::Automaton sender("sender");
+  const auto value = sender.integers("value", 2, 0, 3, std::nullopt);
+  const auto pending = sender.booleans("pending", 2, std::nullopt);
+  sender.internal("refill", {{"u", 0, 1}})
+      .pre([=](const State& s, const Params& p) { return !s[pending[p[0]]]; })
+      .choose([](const State&, const Params&) { return 4u; },
+              [=](State& s, const Params& p, std::uint32_t c) {
+                s[value[p[0]]] = static_cast<int>(c);
+                s[pending[p[0]]] = true;
+              });
+  sender.output("deliver", {{"u", 0, 1}, {"x", 0, 3}})
+      .pre([=](const State& s, const Params& p) {
+        return s[pending[p[0]]] && s[value[p[0]]] == p[1];
+      })
+      .bind("x",
+            [=](const State& s, const Params& p) -> std::optional<std::int32_t> {
+              return s[value[p[0]]];
+            })
+      .eff([=](State& s, const Params& p) { s[pending[p[0]]] = false; });
+  tioa::Automaton receiver("receiver");
+  const auto got = receiver.integer("got", 0, 7, 0);
+  receiver.input("deliver", {{"u", 0, 1}, {"x", 0, 3}})
+      .choose([](const State&, const Params&) { return 2u; },
+              [=](State& s, const Params& p, std::uint32_t c) {
+                s[got] = (s[got] + p[1] + static_cast<int>(c)) % 8;
+              });
+  return tioa::compose("bound-delivery", {sender, receiver});
+}
+
+} // namespace
+
 TEST_CASE("symbolic: reachable states as explicit exploration counts them", "[checker][symbolic]") {
+  {
+    const tioa::Automaton a = bound_delivery();
+    CHECK(explicit_count(a) > 100);
+    CHECK(symbolic_count(a) == static_cast<double>(explicit_count(a)));
+  }
   for (int n : {2, 3, 4}) {
     const fischer::Fischer f = fischer::build(n, 1, 2);
     CHECK(symbolic_count(f.system) == static_cast<double>(explicit_count(f.system)));
@@ -159,6 +202,29 @@ TEST_CASE("symbolic: the worst time from every start state, as check_stabilisati
     };
     CHECK(said("everything reachable: reach, round "));
     CHECK(said("time layer 4: staying inside, round 1"));
+  }
+  SECTION("learning reports its cubes, and a stop ends it") {
+    // A guard that reads 13 booleans: 8 192 cubes, reported every 4 096.
+    tioa::Automaton c("parity");
+    const auto b = c.booleans("b", 13, std::nullopt);
+    c.internal("flip")
+        .pre([=](const State& s, const Params&) {
+          bool odd = false;
+          for (int i = 0; i < 13; ++i)
+            odd = odd != s[b[i]];
+          return odd;
+        })
+        .eff([=](State& s, const Params&) { s[b[0]] = !s[b[0]]; });
+    const sym::BddSession session(c.layout().bits());
+    const sym::Space space(c);
+    sym::LearningFigures figures;
+    std::vector<std::string> reports;
+    const sym::System system(space, figures, {},
+                             [&](const std::string& status) { reports.push_back(status); });
+    CHECK(std::find(reports.begin(), reports.end(), "learning flip, 4096 cubes") != reports.end());
+    CHECK(std::find(reports.begin(), reports.end(), "learning flip, 8192 cubes") != reports.end());
+    sym::LearningFigures again;
+    CHECK_THROWS_AS(sym::System(space, again, [] { return true; }), sym::Stopped);
   }
   SECTION("a zero-time cycle outside L") {
     const tioa::Automaton c = timed_countdown(3, true);
