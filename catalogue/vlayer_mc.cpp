@@ -96,7 +96,7 @@ ModelDefinition vlayer_mc_definition() {
           "lemma-7.3/7.4, theorem-7.5: 'sampled' the sample below; 'all' every start state of "
           "U(VLNodes) x R(env) (lemma-7.4: every L1MC state), decided symbolically (binary "
           "decision diagrams; 1x1 in 20-160 s; 1x2 with junk=0 in 1-40 min, with junk=2 not "
-          "yet: learning its steps takes too long)"),
+          "yet: learning one delivery takes too long)"),
       {"samples", 1000, 1, 1000000,
        "lemma-7.3/7.4, theorem-7.5: start states drawn from U(VLNodes) x R(env) when there are "
        "more than 2 000 000 of them"},
