@@ -179,12 +179,12 @@ void run_steps(const Space& space, const tioa::Transition& t, const tioa::Params
 
 // An action whose parameters are bound to the state (a delivery whose value is the one in
 // its slot, for one slot per region) reads, over its whole box, every slot its binders
-// read, and the expansion splits on all of them at once: with junk slots on 1x2 a target
-// delivery made millions of cubes. One point of the box at a time reads only its own slot,
-// and the relation is the union of the points' relations (a point is a step exactly where
-// every binding allows it). Actions without bindings, or with large boxes, are learned
-// over their whole box at once, which is cheaper when every point reads the same
-// variables (a guard comparing a parameter with one variable splits on it once).
+// read, and the expansion splits on all of them at once. One point of the box at a time
+// reads only its own slot, and the relation is the union of the points' relations (a
+// point is a step exactly where every binding allows it). Actions without bindings, or
+// with large boxes, are learned over their whole box at once, which is cheaper when every
+// point reads the same variables (a guard comparing a parameter with one variable splits
+// on it once).
 StepRelation learn_action(const Space& space, std::size_t action, std::vector<Word> writes,
                           LearningFigures& figures, const LearningWatch& watch) {
   const tioa::Automaton& a = space.automaton();
