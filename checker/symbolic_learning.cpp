@@ -1,6 +1,7 @@
 #include "checker/symbolic_learning.hpp"
 
 #include <functional>
+#include <optional>
 #include <utility>
 
 #include "tioa/candidates.hpp"
@@ -156,17 +157,25 @@ double box_points(const tioa::ActionSignature& sig) {
   return points;
 }
 
-// The steps of `t` with parameters `p` (every choice) from `state`, when `p` is a candidate
-// there (every binding allows it: exactly when for_each_candidate would visit it).
+// The steps of `t` with parameters `p` from `state`, when `p` is a candidate there (every
+// binding allows it: exactly when for_each_candidate would visit it): every choice, or
+// (`owner_choice`) those whose owner's choice of its choose_where is that one.
 void run_steps(const Space& space, const tioa::Transition& t, const tioa::Params& p, Word* state,
-               Word* trace, std::vector<Outcome>& outcomes) {
+               Word* trace, std::vector<Outcome>& outcomes,
+               std::optional<std::uint32_t> owner_choice = std::nullopt) {
   const tioa::State from(state, 0, trace, space.words());
   // (An input not enabled is the explicit explorer's error to report: here the state
-  // may be a partial one, whose placeholders decide nothing.)
-  if (!t.enabled(from, p))
+  // may be a partial one, whose placeholders decide nothing.) With one owner's choice,
+  // its guard and that choice say whether it is a step: the other choices are not read.
+  if (owner_choice ? !t.guard_holds(from, p) || !t.choice_allowed(from, p, *owner_choice)
+                   : !t.enabled(from, p))
     return;
   const std::uint32_t choices = t.choice_count(from, p);
-  for (std::uint32_t c = 0; c < choices; ++c) {
+  const std::uint32_t first = owner_choice.value_or(0),
+                      stride = owner_choice ? t.owner_choices() : 1;
+  for (std::uint32_t c = first; c < choices; c += stride) {
+    if (!owner_choice && !t.choice_allowed(from, p, c))
+      continue;
     Outcome o = start_outcome(space, state);
     tioa::State to(o.state.data(), 0, trace, space.words(), o.writes.data());
     t.apply(to, p, c);
@@ -185,34 +194,48 @@ void run_steps(const Space& space, const tioa::Transition& t, const tioa::Params
 // with large boxes, are learned over their whole box at once, which is cheaper when every
 // point reads the same variables (a guard comparing a parameter with one variable splits
 // on it once).
+//
+// In the same way an action whose owner chooses among copies (choose_where: a delivery of
+// a message that may be pending in any of several slots) is learned one owner's choice at
+// a time: each reads its own slot only, while all of them at once (and the question
+// whether any is allowed) read every slot, and the expansion then splits on the product
+// of the slots' values (on 1x2 with junk slots, millions of cubes for one point).
 StepRelation learn_action(const Space& space, std::size_t action, std::vector<Word> writes,
                           LearningFigures& figures, const LearningWatch& watch) {
   const tioa::Automaton& a = space.automaton();
   const tioa::Transition& t = a.transitions()[action];
   const tioa::ActionSignature& sig = a.actions()[action];
   writes.resize(space.words(), 0);
+  std::vector<std::optional<std::uint32_t>> owner_choices{std::nullopt};
+  if (t.parts.front().choice_allowed) {
+    owner_choices.clear();
+    for (std::uint32_t c = 0; c < t.owner_choices(); ++c)
+      owner_choices.emplace_back(c);
+  }
   bdd relation = bddfalse;
-  if (!t.bindings.empty() && box_points(sig) <= most_points_learned_apart) {
-    tioa::for_each_params(sig.params, [&](const tioa::Params& p) {
-      if (sig.accepts && !sig.accepts(p))
-        return;
+  for (const std::optional<std::uint32_t> owner_choice : owner_choices) {
+    if (!t.bindings.empty() && box_points(sig) <= most_points_learned_apart) {
+      tioa::for_each_params(sig.params, [&](const tioa::Params& p) {
+        if (sig.accepts && !sig.accepts(p))
+          return;
+        const Run run = [&](Word* state, Word* trace, std::vector<Outcome>& outcomes) {
+          const tioa::State from(state, 0, trace, space.words());
+          for (const tioa::Binding& binding : t.bindings)
+            if (!binding.allows(from, p))
+              return;
+          run_steps(space, t, p, state, trace, outcomes, owner_choice);
+        };
+        relation |= learn_relation(space, sig.name, writes, run, figures, watch);
+      });
+    } else {
       const Run run = [&](Word* state, Word* trace, std::vector<Outcome>& outcomes) {
         const tioa::State from(state, 0, trace, space.words());
-        for (const tioa::Binding& binding : t.bindings)
-          if (!binding.allows(from, p))
-            return;
-        run_steps(space, t, p, state, trace, outcomes);
+        tioa::for_each_candidate(sig, t, from, [&](const tioa::Params& p) {
+          run_steps(space, t, p, state, trace, outcomes, owner_choice);
+        });
       };
       relation |= learn_relation(space, sig.name, writes, run, figures, watch);
-    });
-  } else {
-    const Run run = [&](Word* state, Word* trace, std::vector<Outcome>& outcomes) {
-      const tioa::State from(state, 0, trace, space.words());
-      tioa::for_each_candidate(sig, t, from, [&](const tioa::Params& p) {
-        run_steps(space, t, p, state, trace, outcomes);
-      });
-    };
-    relation = learn_relation(space, sig.name, writes, run, figures, watch);
+    }
   }
   return StepRelation(sig.name, space, std::move(writes), std::move(relation));
 }

@@ -592,6 +592,11 @@ void ZeroTimeReduction::check_commutes(const Word* state, const Word* ticked, st
   if (t.choice_count(after_tick, step.params) != choices)
     fail("it has another number of choices after a tick");
   for (std::uint32_t c = 0; c < choices; ++c) {
+    const bool allowed = t.choice_allowed(here, step.params, c);
+    if (t.choice_allowed(after_tick, step.params, c) != allowed)
+      fail("a choice of it is allowed on one side of a tick only");
+    if (!allowed)
+      continue;
     std::copy(state, state + words_, first);
     tioa::State one(first, 0);
     t.apply(one, step.params, c);
@@ -635,6 +640,8 @@ void ZeroTimeReduction::run_step(const Word* state, std::size_t k, Scratch& s, W
   const tioa::StateMeasure& measure = automaton.progress_measure();
   const std::uint64_t measure_here = measure ? measure(tioa::State(state, 0)) : 0;
   for (std::uint32_t c = 0; c < choices; ++c) {
+    if (!t.choice_allowed(from, step.params, c))
+      continue;
     const std::size_t at = s.successors.size();
     s.successors.insert(s.successors.end(), state, state + words_);
     s.successors.push_back(0); // room for a field that spills into the next word

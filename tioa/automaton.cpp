@@ -27,6 +27,21 @@ TransitionBuilder& TransitionBuilder::choose(std::uint32_t count, ChoiceEffect e
   return choose([count](const State&, const Params&) { return count; }, std::move(effect));
 }
 
+TransitionBuilder& TransitionBuilder::choose_where(std::uint32_t count, ChoiceGuard allowed,
+                                                   ChoiceEffect effect) {
+  const ActionSignature& sig = automaton_->signature(action_);
+  if (sig.kind == ActionKind::input)
+    throw ModelError("input '" + sig.name +
+                     "' cannot choose_where: an input is enabled in every state");
+  if (count == 0)
+    throw ModelError("action '" + sig.name + "': choose_where over no choice");
+  choose(count, std::move(effect));
+  TransitionPart& part = automaton_->transition(action_).parts.front();
+  part.choice_allowed = std::move(allowed);
+  part.choice_limit = count;
+  return *this;
+}
+
 TransitionBuilder& TransitionBuilder::footprint(FootprintFunction footprint) {
   automaton_->transition(action_).parts.front().footprint = std::move(footprint);
   return *this;

@@ -11,7 +11,8 @@
 //       .eff([=](State& s, const Params& a) { s[x[a[0]]] = s[x[a[0] - 1]]; });
 //
 // Nondeterminism inside an effect is a `choose(count, effect)`: the effect runs once for
-// each choice 0..count-1, each giving its own successor.
+// each choice 0..count-1, each giving its own successor (`choose_where`: only for the
+// choices a guard allows).
 
 #include <optional>
 #include <string>
@@ -39,6 +40,13 @@ public:
   TransitionBuilder& eff(Effect effect);
   TransitionBuilder& choose(ChoiceCount count, ChoiceEffect effect);
   TransitionBuilder& choose(std::uint32_t count, ChoiceEffect effect);
+  // Choices 0..count-1 of which only those `allowed` gives are steps in a state; the
+  // action is enabled where its pre holds and some choice is allowed. For a choice among
+  // copies the state holds, one per place (a message pending in any of several slots):
+  // choice c reads only place c, so its steps can be told apart without reading the others
+  // (the symbolic learner learns the relation choice by choice). Not for inputs, which
+  // must be enabled in every state.
+  TransitionBuilder& choose_where(std::uint32_t count, ChoiceGuard allowed, ChoiceEffect effect);
   // What the transition may read and write (tioa/footprint.hpp); without it, everything.
   TransitionBuilder& footprint(FootprintFunction footprint);
   // The author's word that the step commutes with a tick of this automaton's time: in

@@ -91,6 +91,8 @@ public:
         }
         const std::uint32_t choices = t.choice_count(from, p);
         for (std::uint32_t c = 0; c < choices; ++c) {
+          if (!t.choice_allowed(from, p, c))
+            continue;
           copy_state(scratch, state);
           State to(scratch, 0);
           t.apply(to, p, c);

@@ -30,6 +30,7 @@ using Guard = std::function<bool(const State&, const Params&)>;
 using Effect = std::function<void(State&, const Params&)>;
 using ChoiceCount = std::function<std::uint32_t(const State&, const Params&)>;
 using ChoiceEffect = std::function<void(State&, const Params&, std::uint32_t choice)>;
+using ChoiceGuard = std::function<bool(const State&, const Params&, std::uint32_t choice)>;
 using Evolve = std::function<void(State&)>;
 using StateMeasure = std::function<std::uint64_t(const State&)>;
 
@@ -110,10 +111,13 @@ struct TransitionPart {
   // Its automaton's whole state, whatever its size once placed (the default footprint).
   static constexpr std::uint32_t own_state = 0xffffffffu;
 
-  Guard guard;                 // empty: always enabled
-  Effect effect;               // deterministic effect (empty: no change), or
-  ChoiceEffect choice_effect;  // one effect per choice, with
-  ChoiceCount choices;         // the number of choices in this state (empty: 1)
+  Guard guard;                // empty: always enabled
+  Effect effect;              // deterministic effect (empty: no change), or
+  ChoiceEffect choice_effect; // one effect per choice, with
+  ChoiceCount choices;        // the number of choices in this state (empty: 1)
+  // (an owner's choose_where) The choices that are steps in a state, of `choice_limit`.
+  ChoiceGuard choice_allowed;
+  std::uint32_t choice_limit = 1;
   FootprintFunction footprint; // what it may read and write (empty: `bits` from `base`)
   std::uint32_t base = 0;      // where its automaton's state begins
   std::uint32_t bits = own_state;
@@ -150,7 +154,21 @@ struct Transition {
   std::vector<Binding> bindings; // parameters bound to state values (none: the whole box)
   bool input = false;            // the action is an input: a frozen owner takes it, doing nothing
 
+  // Whether the action has a step: the owner's guard holds (or it is a frozen input) and,
+  // for a choose_where, one of its choices is allowed.
   bool enabled(const State& s, const Params& p) const {
+    if (!guard_holds(s, p))
+      return false;
+    const TransitionPart& owner = parts.front();
+    if (!owner.choice_allowed)
+      return true;
+    for (std::uint32_t c = 0; c < owner.choice_limit; ++c)
+      if (owner.choice_allowed(owner.local(s), p, c))
+        return true;
+    return false;
+  }
+  // The owner's guard alone (its choices not asked).
+  bool guard_holds(const State& s, const Params& p) const {
     const TransitionPart& owner = parts.front();
     if (!owner.frozen_by.empty() && owner.frozen(s))
       return input;
@@ -158,6 +176,16 @@ struct Transition {
       return true;
     return owner.base == 0 ? owner.guard(s, p) : owner.guard(s.at(owner.base), p);
   }
+  // Whether choice `choice` (of choice_count) is a step, in a state where the action is
+  // enabled: the owner's part of it is allowed (choose_where; the owner's choice is the
+  // lowest digit, see apply).
+  bool choice_allowed(const State& s, const Params& p, std::uint32_t choice) const {
+    const TransitionPart& owner = parts.front();
+    return !owner.choice_allowed ||
+           owner.choice_allowed(owner.local(s), p, choice % owner.choice_limit);
+  }
+  // The choices of the owner's choose_where (1: none).
+  std::uint32_t owner_choices() const { return parts.front().choice_limit; }
   // The product of the choices of the parts that take part (mixed radix, in part order).
   std::uint32_t choice_count(const State& s, const Params& p) const {
     std::uint32_t count = 1;

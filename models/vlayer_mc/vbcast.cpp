@@ -140,30 +140,21 @@ tioa::Automaton vbcast(const VlConfig& c) {
   // Deliveries. A slot whose last receiver got the message is reset to age 0.
   //
   // D31: with junk slots the same message may be pending for the same receiver in several
-  // slots (its own and junk ones). Each copy is a choice of the delivery (tioa's `choose`):
-  // the sender's own slot first, then the junk slots in order. Without junk slots the
-  // value a delivery carries is bound to its slot (tioa's `bind`).
+  // slots (its own and junk ones). Each copy is a choice of the delivery (tioa's
+  // `choose_where`): choice 0 the sender's own slot, choice 1 + i junk slot i, each a
+  // step where its slot holds the message for this receiver. (Each choice reads only its
+  // own slot, which the symbolic learner needs: counting the copies read every slot.)
+  // Without junk slots the value a delivery carries is bound to its slot (tioa's `bind`).
   const auto junk_match = [=](const State& s, int i, int kind, int id, int value, int from,
                               int bit) {
     return s[j_kind[i]] == kind && s[j_id[i]] == id && s[j_value[i]] == value &&
            (from < 0 || s[j_from[i]] == from) && (s[j_to[i]] >> bit & 1) != 0;
   };
-  const auto junk_count = [=](const State& s, int kind, int id, int value, int from, int bit) {
-    std::uint32_t count = 0;
-    for (int i = 0; i < junk_slots; ++i)
-      count += junk_match(s, i, kind, id, value, from, bit) ? 1 : 0;
-    return count;
-  };
-  // Delivers the k-th junk copy (in slot order) to the receiver `bit`.
-  const auto take_junk = [=](State& s, std::uint32_t k, int kind, int id, int value, int from,
-                             int bit) {
-    for (int i = 0; i < junk_slots; ++i)
-      if (junk_match(s, i, kind, id, value, from, bit) && k-- == 0) {
-        s[j_to[i]] = s[j_to[i]] & ~(1 << bit);
-        if (s[j_to[i]] == 0)
-          clear_junk(s, i);
-        return;
-      }
+  // Delivers junk slot i's copy to the receiver `bit`.
+  const auto take_junk = [=](State& s, int i, int bit) {
+    s[j_to[i]] = s[j_to[i]] & ~(1 << bit);
+    if (s[j_to[i]] == 0)
+      clear_junk(s, i);
   };
   // The transition of delivery `b`: `own` is the copy in the sender's slot, `take_own`
   // delivers it, `junk_key` gives (kind, id, value, from, bit) of the junk copies, `bound`
@@ -174,23 +165,20 @@ tioa::Automaton vbcast(const VlConfig& c) {
       b.pre(own).bind(param, bound).eff(take_own);
       return;
     }
-    const auto copies = [=](const State& s, const Params& x) -> std::uint32_t {
-      const auto [kind, id, value, from, bit] = junk_key(x);
-      return (own(s, x) ? 1 : 0) + junk_count(s, kind, id, value, from, bit);
-    };
-    b.pre([=](const State& s, const Params& x) {
-       return copies(s, x) > 0;
-     }).choose(copies, [=](State& s, const Params& x, std::uint32_t k) {
-      if (own(s, x)) {
-        if (k == 0) {
-          take_own(s, x);
-          return;
-        }
-        --k;
-      }
-      const auto [kind, id, value, from, bit] = junk_key(x);
-      take_junk(s, k, kind, id, value, from, bit);
-    });
+    b.choose_where(
+        1 + static_cast<std::uint32_t>(junk_slots),
+        [=](const State& s, const Params& x, std::uint32_t copy) {
+          if (copy == 0)
+            return own(s, x);
+          const auto [kind, id, value, from, bit] = junk_key(x);
+          return junk_match(s, static_cast<int>(copy) - 1, kind, id, value, from, bit);
+        },
+        [=](State& s, const Params& x, std::uint32_t copy) {
+          if (copy == 0)
+            take_own(s, x);
+          else
+            take_junk(s, static_cast<int>(copy) - 1, junk_key(x)[4]);
+        });
   };
   using Key = std::array<int, 5>;
   for (int v = 0; v < regions; ++v) {

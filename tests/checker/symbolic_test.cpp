@@ -136,12 +136,45 @@ tioa::Automaton bound_delivery() {
   return tioa::compose("bound-delivery", {sender, receiver});
 }
 
+// Copies of values in three slots (1, empty, 2), delivered by a choose_where with one
+// choice per slot, learned one choice at a time, to a receiver with a choice of its own.
+// Reachable: the start; slot 0 delivered (got 1 or 2); slot 2 delivered (got 2 or 3);
+// both (got 3, 4 or 5): 8 states. A delivery from a slot that does not hold its value
+// (a choice not allowed) would reach more.
+tioa::Automaton slot_delivery() {
+  tioa::Automaton sender("sender");
+  tioa::VariableArray<int> slot;
+  const int initial[3] = {1, 0, 2};
+  for (int i = 0; i < 3; ++i)
+    slot.items.push_back(sender.integer("slot[" + std::to_string(i) + "]", 0, 3, initial[i]));
+  sender.output("deliver", {{"x", 1, 3}})
+      .choose_where(
+          3,
+          [=](const State& s, const Params& p, std::uint32_t c) {
+            return s[slot[static_cast<int>(c)]] == p[0];
+          },
+          [=](State& s, const Params&, std::uint32_t c) { s[slot[static_cast<int>(c)]] = 0; });
+  tioa::Automaton receiver("receiver");
+  const auto got = receiver.integer("got", 0, 7, 0);
+  receiver.input("deliver", {{"x", 1, 3}})
+      .choose([](const State&, const Params&) { return 2u; },
+              [=](State& s, const Params& p, std::uint32_t c) {
+                s[got] = (s[got] + p[0] + static_cast<int>(c)) % 8;
+              });
+  return tioa::compose("slot-delivery", {sender, receiver});
+}
+
 } // namespace
 
 TEST_CASE("symbolic: reachable states as explicit exploration counts them", "[checker][symbolic]") {
   {
     const tioa::Automaton a = bound_delivery();
     CHECK(explicit_count(a) > 100);
+    CHECK(symbolic_count(a) == static_cast<double>(explicit_count(a)));
+  }
+  {
+    const tioa::Automaton a = slot_delivery();
+    CHECK(explicit_count(a) == 8);
     CHECK(symbolic_count(a) == static_cast<double>(explicit_count(a)));
   }
   for (int n : {2, 3, 4}) {

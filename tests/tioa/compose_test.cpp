@@ -150,6 +150,35 @@ TEST_CASE("compose: choices of the sender and the receivers multiply", "[tioa][c
   CHECK(pairs.size() == 6);
 }
 
+// The sender's choose_where is the lowest digit of the composed choice: a receiver's
+// choices multiply only the sender's allowed ones.
+TEST_CASE("compose: a sender's choose_where with a choosing receiver", "[tioa][compose]") {
+  Automaton s("s");
+  const auto a = s.integers("a", 3, 0, 1, 1);
+  s.output("go").choose_where(
+      3,
+      [=](const State& st, const Params&, std::uint32_t k) {
+        return st[a[static_cast<int>(k)]] == 1;
+      },
+      [=](State& st, const Params&, std::uint32_t k) { st[a[static_cast<int>(k)]] = 0; });
+  Automaton r("r");
+  const auto b = r.integer("b", 0, 1, 0);
+  r.input("go").choose(
+      2, [=](State& st, const Params&, std::uint32_t k) { st[b] = static_cast<int>(k); });
+  const Automaton sys = s || r;
+  Words w = start_states(sys).at(0);
+  State(w.data(), 0)[variable<int>(sys, "s.a[1]")] = 0;
+  const auto list = steps(sys, w);
+  // Slots 0 and 2 hold 1, slot 1 does not: 2 sender choices × 2 receiver choices.
+  CHECK(labels(list) ==
+        std::vector<std::string>{"go", "go [choice 2]", "go [choice 3]", "go [choice 5]"});
+  std::set<std::pair<int, int>> pairs;
+  for (const auto& step : list)
+    pairs.emplace(value_of(step.state, variable<int>(sys, "s.a[0]")),
+                  value_of(step.state, variable<int>(sys, "r.b")));
+  CHECK(pairs == std::set<std::pair<int, int>>{{0, 0}, {1, 0}, {0, 1}, {1, 1}});
+}
+
 TEST_CASE("compose: an input that is not enabled when delivered is a ModelError",
           "[tioa][compose]") {
   Automaton picky("picky");

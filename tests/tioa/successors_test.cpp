@@ -111,6 +111,50 @@ TEST_CASE("successors: choices may depend on the state and the parameters", "[ti
   CHECK(value_of(list[3].state, v) == 1);
 }
 
+// A choice among copies held in the state: each slot that holds the wanted value is one
+// choice, numbered by its slot; the action is enabled only where some slot holds it.
+TEST_CASE("successors: choose_where gives the allowed choices, numbered as they are",
+          "[tioa][successors]") {
+  Automaton a("slots");
+  const auto slot = a.integers("slot", 3, 0, 2, 0);
+  a.internal("take", {{"v", 1, 2}})
+      .choose_where(
+          3,
+          [=](const State& s, const Params& p, std::uint32_t c) {
+            return s[slot[static_cast<int>(c)]] == p[0];
+          },
+          [=](State& s, const Params&, std::uint32_t c) { s[slot[static_cast<int>(c)]] = 0; });
+  Words w = blank(a);
+  CHECK(steps(a, w).empty()); // no slot holds 1 or 2: not enabled
+  const ActionSignature& take = a.actions().front();
+  Params p;
+  p.size = 1;
+  p.values[0] = 1;
+  CHECK_FALSE(a.transitions().front().enabled(State(w.data(), 0), p));
+  State(w.data(), 0)[slot[0]] = 1;
+  State(w.data(), 0)[slot[2]] = 1;
+  State(w.data(), 0)[slot[1]] = 2;
+  CHECK(a.transitions().front().enabled(State(w.data(), 0), p));
+  const auto list = steps(a, w);
+  CHECK(labels(list) ==
+        std::vector<std::string>{"take(1)", "take(1) [choice 2]", "take(2) [choice 1]"});
+  REQUIRE(list.size() == 3);
+  CHECK(value_of(list[0].state, slot[0]) == 0);
+  CHECK(value_of(list[0].state, slot[2]) == 1);
+  CHECK(value_of(list[1].state, slot[2]) == 0);
+  CHECK(value_of(list[2].state, slot[1]) == 0);
+  CHECK(take.name == "take");
+
+  Automaton in("in");
+  in.boolean("b", false);
+  const std::string error = model_error([&] {
+    in.input("go").choose_where(
+        2, [](const State&, const Params&, std::uint32_t) { return true; },
+        [](State&, const Params&, std::uint32_t) {});
+  });
+  CHECK_THAT(error, Catch::Contains("input 'go' cannot choose_where"));
+}
+
 TEST_CASE("successors: a disabled action and an empty box give no successor",
           "[tioa][successors]") {
   Automaton a("quiet");

@@ -54,15 +54,17 @@ TEST_CASE("vlayer junk (D31): VBcast delivers U's messages to the receivers they
   s = after(vb, s, "GPSupdate_0(6,0)");
   s = after(vb, s, "GPSupdate_1(8,0)");
   // Client 0 (region 0) sends a target for robot 1 (region 1, a neighbour): CN_1 gets it,
-  // with the sender's region as the VN's id.
+  // with the sender's region as the VN's id. A delivery's choice names the copy: 0 the
+  // sender's own slot, 1 + i junk slot i (client 0's slots 0 and 1, client 1's 2 and 3).
   s = after(vb, s, "vcast'_junk_0(1,3,1,8)");
   CHECK(get(vb, s, "junk_to[1]") == 1);
   CHECK(get(vb, s, "junk_from[1]") == 0);
-  CHECK(has(steps(vb, s), "vrcv_target_update_1(0,8)"));
+  CHECK(only(steps(vb, s), "vrcv_target_update_1").size() == 1);
+  CHECK(has(steps(vb, s), "vrcv_target_update_1(0,8) [choice 2]"));
   // A cn-update about robot 1 at point 6 goes to VN_0; robot 1's own cn-update of the same
   // point is a second copy: one choice per copy.
   s = after(vb, s, "vcast'_junk_0(0,1,1,6)");
-  CHECK(has(steps(vb, s), "vrcv_cn_update_0(1,6)"));
+  CHECK(has(steps(vb, s), "vrcv_cn_update_0(1,6) [choice 1]"));
   s = after(vb, s, "vcast'_cn_update_1(6)");
   const auto copies = only(steps(vb, s), "vrcv_cn_update_0(1,6)");
   REQUIRE(copies.size() == 2);
@@ -74,7 +76,7 @@ TEST_CASE("vlayer junk (D31): VBcast delivers U's messages to the receivers they
   // VN_0 does not (D11). A count above N reaches nobody.
   s = after(vb, s, "vcast'_junk_1(0,2,0,2)");
   CHECK(get(vb, s, "junk_to[2]") == 2);
-  CHECK(has(steps(vb, s), "vrcv_vn_update_1(0,2)"));
+  CHECK(has(steps(vb, s), "vrcv_vn_update_1(0,2) [choice 3]"));
   CHECK(get(vb, after(vb, s, "vcast'_junk_1(1,2,0,5)"), "junk_to[3]") == 0);
   // Within d = 1: at age 1 time cannot pass while a receiver waits.
   s = after(vb, s, "tick");
