@@ -39,7 +39,7 @@ System::System(const Space& space, LearningFigures& figures, std::function<bool(
       tick_(learn_tick(space, figures, watch_learning(stop, report))), stop_(std::move(stop)),
       report_(std::move(report)) {}
 
-void System::next_round(const char* fixpoint, std::uint32_t round) const {
+void System::next_group(const char* fixpoint, std::uint32_t round, const std::string& group) const {
   if (stop_ && stop_())
     throw Stopped{};
   if (!report_)
@@ -47,7 +47,7 @@ void System::next_round(const char* fixpoint, std::uint32_t round) const {
   char nodes[32];
   std::snprintf(nodes, sizeof nodes, "%.1f M", static_cast<double>(bdd_getnodenum()) / 1e6);
   report_((stage_.empty() ? "" : stage_ + ": ") + fixpoint + ", round " + std::to_string(round) +
-          ", " + nodes + " BDD nodes");
+          (group.empty() ? "" : ", " + group) + ", " + nodes + " BDD nodes");
 }
 
 // Chained over the groups, each applied to the states not yet expanded (the frontier), which
@@ -65,6 +65,7 @@ bdd System::closure(const bdd& set, bool with_tick, bool backward, const bdd& wi
     return set & goal;
   const bdd moving = within & !settled_;
   const auto apply = [&](const StepRelation& step) {
+    next_group(name, round, step.name());
     const bdd fresh = backward ? step.preimage(frontier) & moving & !all
                                : step.image(frontier & !settled_) & within & !all;
     all |= fresh;
@@ -72,7 +73,7 @@ bdd System::closure(const bdd& set, bool with_tick, bool backward, const bdd& wi
     return fresh;
   };
   while (frontier != bddfalse) {
-    next_round(name, ++round);
+    next_group(name, ++round, "");
     bdd added = bddfalse;
     for (const StepRelation& step : zero_time_)
       added |= apply(step);
@@ -90,9 +91,11 @@ bool System::stays_within(const bdd& set, const bdd& inside) const {
     return false;
   bdd all = set, frontier = set;
   bool left = false;
+  std::uint32_t round = 0;
   const auto apply = [&](const StepRelation& step) {
     if (left)
       return bdd(bddfalse);
+    next_group("staying inside", round, step.name());
     const bdd image = step.image(frontier & !settled_);
     left = (image & !inside) != bddfalse;
     const bdd fresh = image & !all;
@@ -100,9 +103,8 @@ bool System::stays_within(const bdd& set, const bdd& inside) const {
     frontier |= fresh;
     return fresh;
   };
-  std::uint32_t round = 0;
   while (frontier != bddfalse && !left) {
-    next_round("staying inside", ++round);
+    next_group("staying inside", ++round, "");
     bdd added = bddfalse;
     for (const StepRelation& step : zero_time_)
       added |= apply(step);
@@ -161,11 +163,13 @@ bdd System::zero_time_forever(const bdd& within) const {
   bdd keep = within & !settled_, before;
   std::uint32_t round = 0;
   do {
-    next_round("zero-time cycles", ++round);
+    next_group("zero-time cycles", ++round, "");
     before = keep;
     bdd onward = bddfalse;
-    for (const StepRelation& step : zero_time_)
+    for (const StepRelation& step : zero_time_) {
+      next_group("zero-time cycles", round, step.name());
       onward |= step.preimage(keep);
+    }
     keep &= onward;
   } while (keep != before);
   return keep;

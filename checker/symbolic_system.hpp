@@ -74,8 +74,10 @@ private:
   // `goal` (backward only; bddfalse: none): stop at the first round whose states meet it.
   bdd closure(const bdd& set, bool with_tick, bool backward, const bdd& within,
               const bdd& goal = bddfalse) const;
-  // One round of a fixpoint: asks stop_ (throws Stopped) and tells report_.
-  void next_round(const char* fixpoint, std::uint32_t round) const;
+  // At the start of a fixpoint's round (`group` empty) and before each of its groups
+  // (`group`: its name), so that a stop or a time limit is not held up by a whole round
+  // (minutes on 1x2): asks stop_ (throws Stopped) and tells report_.
+  void next_group(const char* fixpoint, std::uint32_t round, const std::string& group) const;
 
   const Space* space_;
   std::vector<StepRelation> zero_time_;

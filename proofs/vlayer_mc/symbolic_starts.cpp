@@ -20,7 +20,8 @@ SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
       environment_(u_environment(config, starts)),
       session_(std::make_unique<sym::BddSession>(
           std::max(layer.layout().bits(), environment_.layout().bits()))) {
-  // Asked at every fixpoint round (a single image may still go past the memory limit).
+  // Asked before every step group of a fixpoint round (a single image may still go past
+  // the memory limit).
   const auto stop = [this] {
     if (checker::interrupted())
       stopped_by_ = "an interrupt (SIGINT or SIGTERM)";

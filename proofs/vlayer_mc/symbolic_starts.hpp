@@ -34,8 +34,8 @@ struct SymbolicRun {
 class SymbolicU {
 public:
   // `layer` is u_layer(config, starts). R(env) may stop at the options' limits of time or
-  // memory (resident memory, asked at every fixpoint round): stopped(). With
-  // options.progress, every fixpoint round redraws a progress line on a terminal.
+  // memory (resident memory, asked before every step group of a fixpoint round):
+  // stopped(). With options.progress, each group redraws a progress line on a terminal.
   SymbolicU(const VlConfig& config, const ArbitraryStarts& starts, const tioa::Automaton& layer,
             const checker::ExploreOptions& options);
 

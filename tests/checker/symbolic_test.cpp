@@ -214,7 +214,7 @@ TEST_CASE("symbolic: the worst time from every start state, as check_stabilisati
     system.set_stop([] { return true; });
     CHECK(sym::stabilise(system, space.valid(), space.valid(), 0).stopped);
   }
-  SECTION("every fixpoint round is reported, with its stage") {
+  SECTION("every group of every fixpoint round is reported, with its stage") {
     const tioa::Automaton c = timed_countdown(4);
     const sym::BddSession session(c.layout().bits());
     const sym::Space space(c);
@@ -233,8 +233,8 @@ TEST_CASE("symbolic: the worst time from every start state, as check_stabilisati
       return std::any_of(reports.begin(), reports.end(),
                          [&](const std::string& s) { return s.find(part) != std::string::npos; });
     };
-    CHECK(said("everything reachable: reach, round "));
-    CHECK(said("time layer 4: staying inside, round 1"));
+    CHECK(said("everything reachable: reach, round 1, tick, "));
+    CHECK(said("time layer 4: staying inside, round 1, tick, "));
   }
   SECTION("learning reports its cubes, and a stop ends it") {
     // A guard that reads 13 booleans: 8 192 cubes, reported every 4 096.
