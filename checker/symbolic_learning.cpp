@@ -199,7 +199,7 @@ void run_steps(const Space& space, const tioa::Transition& t, const tioa::Params
 // a message that may be pending in any of several slots) is learned one owner's choice at
 // a time: each reads its own slot only, while all of them at once (and the question
 // whether any is allowed) read every slot, and the expansion then splits on the product
-// of the slots' values (on 1x2 with junk slots, millions of cubes for one point).
+// of the slots' values (on 1x2 with junk slots, about 280 000 cubes for one point).
 StepRelation learn_action(const Space& space, std::size_t action, std::vector<Word> writes,
                           LearningFigures& figures, const LearningWatch& watch) {
   const tioa::Automaton& a = space.automaton();
