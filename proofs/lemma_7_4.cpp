@@ -1,6 +1,7 @@
 #include "proofs/lemma_7_4.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,7 +45,6 @@ PropertyResult lemma_7_4_symbolically(const VlConfig& c, MWindow window,
   SymbolicU u(c, starts, layer, options);
   const bdd lmc = u.measured_lmc(c, layer, window, known);
   const bdd l1 = u.start() & u.conjunction(l1mc_conjuncts(c, layer, window));
-  const SymbolicRun run = u.stabilise(l1, lmc, lmc, bound);
   const SymbolicClaim claim{"Lemma 7.4 (from L1MC, in LMC from delta + d + e on)",
                             bound,
                             false,
@@ -53,6 +53,15 @@ PropertyResult lemma_7_4_symbolically(const VlConfig& c, MWindow window,
                             in_lmc,
                             in_lmc,
                             {}};
+  // Counterexample first, as Lemma 7.3 (lemma_7_3.cpp).
+  std::optional<PropertyResult> from_part;
+  if (u.without_junk() != u.start())
+    from_part =
+        judge_symbolic_part(u.stabilise(l1 & u.without_junk(), lmc, lmc, bound, "without junk"),
+                            u.space().count(l1), without_junk_words, layer, claim, options);
+  const SymbolicRun run = u.stabilise(l1, lmc, lmc, bound);
+  if (run.result.stopped && from_part)
+    return finish_7_4(part_when_whole_stopped(std::move(*from_part), run), c, starts, layer, known);
   return finish_7_4(judge_symbolic(run, layer, claim, options), c, starts, layer, known);
 }
 

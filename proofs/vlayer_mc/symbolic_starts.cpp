@@ -5,12 +5,39 @@
 #include "checker/interrupt.hpp"
 #include "checker/memory_budget.hpp"
 
+#include "models/vlayer_mc/junk.hpp"
 #include "models/vlayer_mc/reset_mc.hpp"
 #include "proofs/vlayer_mc/symbolic_lmc.hpp"
 
 namespace vlayer_mc {
 
 namespace sym = checker::symbolic;
+
+namespace {
+
+// The states of `space` whose junk slots are all empty, each field of each slot 0: the
+// variables the slots are made of, named `VBcast.junk_kind[i]`, `CN_p.delay.junk_value[j]`
+// and so on (models/vlayer_mc/vbcast.cpp, vbdelay.cpp), hold 0, junk::empty for a slot's
+// kind. That is how a slot is left when it empties (and how it starts), so these are
+// exactly the start states of the same instance with `junk=0`: its sets, with constant
+// junk variables, are as small as that instance's (an empty slot with other fields free
+// made the first time layers of 1x2 several times slower).
+bdd junk_slots_empty(const sym::Space& space) {
+  static_assert(junk::empty == 0);
+  bdd empty = bddtrue;
+  for (const auto& v : space.variables()) {
+    if (v.name.find(".junk_") == std::string::npos)
+      continue;
+    const tioa::VariableInfo& info = *space.automaton().layout().find(v.name);
+    const auto code = static_cast<std::uint64_t>(-info.lo);
+    for (std::uint32_t b = 0; b < v.width; ++b)
+      empty &= ((code >> b) & 1) ? sym::Space::current(v.offset + b)
+                                 : !sym::Space::current(v.offset + b);
+  }
+  return empty;
+}
+
+} // namespace
 
 SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
                      const tioa::Automaton& layer, const checker::ExploreOptions& options)
@@ -31,7 +58,7 @@ SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
       stopped_by_ = "the memory limit";
     return !stopped_by_.empty();
   };
-  const auto report = [this](const std::string& status) { progress_.show(status); };
+  const auto report = [this](const std::string& status) { progress_.show(part_ + status); };
   // R(env): every state the environment reaches with its inputs from the nodes free.
   bdd env_reach;
   {
@@ -47,6 +74,7 @@ SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
     space_.emplace(layer);
     // Every valuation of the nodes' variables, with the environment in R(env).
     start_ = sym::move_set(env_reach, env_space, *space_) & space_->valid();
+    without_junk_ = start_ & junk_slots_empty(*space_);
   }
   env_reach = bddfalse;
   sym::BddSession::reorder_by_variables(layer.layout());
@@ -79,7 +107,8 @@ bdd SymbolicU::measured_lmc(const VlConfig& config, const tioa::Automaton& layer
 }
 
 SymbolicRun SymbolicU::stabilise(const bdd& start, const bdd& legal, const bdd& settled,
-                                 std::uint64_t witness_after) {
+                                 std::uint64_t witness_after, const std::string& part) {
+  part_ = part.empty() ? "" : part + ": ";
   SymbolicRun run;
   run.seconds = elapsed();
   run.stopped_by = stopped_by_;

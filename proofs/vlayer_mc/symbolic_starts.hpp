@@ -21,6 +21,9 @@
 
 namespace vlayer_mc {
 
+// SymbolicU::without_junk() in words, for reports.
+inline const std::string without_junk_words = "the start states whose junk slots are empty";
+
 struct SymbolicRun {
   checker::symbolic::StabilisationResult result;
   double environment_states = 0; // |R(env)|
@@ -42,6 +45,10 @@ public:
   bool stopped() const { return !system_; } // R(env) was not finished
   const checker::symbolic::Space& space() const { return *space_; }
   const bdd& start() const { return start_; }
+  // The start states whose junk slots (D31) are all empty (every field 0): the start
+  // states of the same instance with `junk=0`, inside this layer (no step fills a junk
+  // slot). Equal to start() when the layer has no junk slots.
+  const bdd& without_junk() const { return without_junk_; }
   double environment_states() const { return environment_states_; }
 
   // When stopped(), the sets below are empty and stabilise() says stopped.
@@ -55,8 +62,10 @@ public:
 
   // From `start` into `legal`, with `settled` counted in L and not expanded (bddfalse: none);
   // a start state of a worst case is picked when the worst time exceeds `witness_after`.
+  // `part` names the part of the start set `start` is, for the progress line ("without
+  // junk: time layer 3: ...").
   SymbolicRun stabilise(const bdd& start, const bdd& legal, const bdd& settled,
-                        std::uint64_t witness_after);
+                        std::uint64_t witness_after, const std::string& part = "");
 
 private:
   double elapsed() const;
@@ -69,9 +78,10 @@ private:
   checker::symbolic::LearningFigures figures_;
   std::optional<checker::symbolic::Space> space_;
   std::optional<checker::symbolic::System> system_;
-  bdd start_ = bddfalse;
+  bdd start_ = bddfalse, without_junk_ = bddfalse;
   double environment_states_ = 0;
   std::string stopped_by_;
+  std::string part_; // what the progress line says first ("without junk: ")
 };
 
 } // namespace vlayer_mc

@@ -111,4 +111,43 @@ PropertyResult judge_symbolic(const SymbolicRun& run, const tioa::Automaton& lay
   return r;
 }
 
+std::optional<PropertyResult> judge_symbolic_part(const SymbolicRun& run, double all_states,
+                                                  const std::string& part,
+                                                  const tioa::Automaton& layer,
+                                                  const SymbolicClaim& claim,
+                                                  const checker::ExploreOptions& options) {
+  const checker::symbolic::StabilisationResult& s = run.result;
+  if (s.stopped || (s.worst && *s.worst <= claim.bound))
+    return std::nullopt;
+  PropertyResult r = judge_symbolic(run, layer, claim, options);
+  const auto count = [](double x) {
+    return x < 1.8e19 ? std::optional<std::uint64_t>(static_cast<std::uint64_t>(x)) : std::nullopt;
+  };
+  const std::string of = scientific(s.start_states) + " of " + scientific(all_states);
+  r.coverage.starts = checker::Starts::sampled;
+  r.coverage.count = count(s.start_states).value_or(0);
+  r.coverage.of = count(all_states);
+  r.coverage.chosen = part + " (" + of +
+                      " start states), decided symbolically first: a "
+                      "worst time past the bound there is one for every start state";
+  for (auto& [name, value] : r.figures)
+    if (name == "covered")
+      value = part + ": " + of + " start states (symbolic); the others not needed";
+  std::erase_if(r.figures, [](const auto& figure) { return figure.first == "measured"; });
+  const std::string worst =
+      s.worst ? std::to_string(*s.worst) + " " + r.time_unit : std::string("none");
+  r.figures.emplace_back("worst time of the part", worst + " (every start state: at least that)");
+  r.message += " (" + part + "; over every start state the worst time is at least that)";
+  r.worst_time.reset();
+  r.last_time_outside.reset();
+  return r;
+}
+
+PropertyResult part_when_whole_stopped(PropertyResult from_part, const SymbolicRun& whole) {
+  from_part.notes.push_back("every start state: the symbolic computation stopped at " +
+                            whole.stopped_by + ", so the worst time over all of them is not known");
+  from_part.seconds = whole.seconds;
+  return from_part;
+}
+
 } // namespace vlayer_mc

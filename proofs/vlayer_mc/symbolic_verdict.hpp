@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "checker/options.hpp"
@@ -35,6 +36,24 @@ struct SymbolicClaim {
 checker::PropertyResult judge_symbolic(const SymbolicRun& run, const tioa::Automaton& layer,
                                        const SymbolicClaim& claim,
                                        const checker::ExploreOptions& options);
+
+// Counterexample first. A run from a part of the start set (`part`, in words) whose worst
+// time exceeds the claim's bound, or that has none: the whole set's worst time is at least
+// as late, so the verdict is the one the whole set would get (violated for an exact claim,
+// not confirmed otherwise), from the part's witness. nullopt when the part is within the
+// bound (or stopped): then only the whole set decides. The result's coverage is the part
+// (`starts` sampled, chosen by that rule) of `all_states`; the part's worst time is a lower
+// bound for the whole set, so it is given in the message and as a figure, not as the worst
+// time.
+std::optional<checker::PropertyResult>
+judge_symbolic_part(const SymbolicRun& run, double all_states, const std::string& part,
+                    const tioa::Automaton& layer, const SymbolicClaim& claim,
+                    const checker::ExploreOptions& options);
+
+// The result of judge_symbolic_part when the run from every start state that followed it
+// (`whole`) stopped: said in a note.
+checker::PropertyResult part_when_whole_stopped(checker::PropertyResult from_part,
+                                                const SymbolicRun& whole);
 
 // A number of states in three significant digits ("1.09e+16").
 std::string scientific(double x);
