@@ -72,7 +72,9 @@ PropertyResult lemma_7_3_symbolically(const VlConfig& c, MWindow window,
     from_part =
         judge_symbolic_part(u.stabilise(u.without_junk(), in_l1mc, bddfalse, bound, "without junk"),
                             u.space().count(u.start()), without_junk_words, layer, claim, options);
-  const SymbolicRun run = u.stabilise(u.start(), in_l1mc, bddfalse, bound);
+  // (In a child process once the part has a verdict, so that a stop gives it at once.)
+  const SymbolicRun run =
+      u.stabilise(u.start(), in_l1mc, bddfalse, bound, "", from_part.has_value());
   if (run.result.stopped && from_part)
     return finish(part_when_whole_stopped(std::move(*from_part), run), c, starts, layer);
   return finish(judge_symbolic(run, layer, claim, options), c, starts, layer);

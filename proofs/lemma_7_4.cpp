@@ -59,7 +59,7 @@ PropertyResult lemma_7_4_symbolically(const VlConfig& c, MWindow window,
     from_part =
         judge_symbolic_part(u.stabilise(l1 & u.without_junk(), lmc, lmc, bound, "without junk"),
                             u.space().count(l1), without_junk_words, layer, claim, options);
-  const SymbolicRun run = u.stabilise(l1, lmc, lmc, bound);
+  const SymbolicRun run = u.stabilise(l1, lmc, lmc, bound, "", from_part.has_value());
   if (run.result.stopped && from_part)
     return finish_7_4(part_when_whole_stopped(std::move(*from_part), run), c, starts, layer, known);
   return finish_7_4(judge_symbolic(run, layer, claim, options), c, starts, layer, known);

@@ -4,6 +4,7 @@
 
 #include "checker/interrupt.hpp"
 #include "checker/memory_budget.hpp"
+#include "checker/symbolic_apart.hpp"
 
 #include "models/vlayer_mc/junk.hpp"
 #include "models/vlayer_mc/reset_mc.hpp"
@@ -47,17 +48,7 @@ SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
       environment_(u_environment(config, starts)),
       session_(std::make_unique<sym::BddSession>(
           std::max(layer.layout().bits(), environment_.layout().bits()))) {
-  // Asked before every step group of a fixpoint round (a single image may still go past
-  // the memory limit).
-  const auto stop = [this] {
-    if (checker::interrupted())
-      stopped_by_ = "an interrupt (SIGINT or SIGTERM)";
-    else if (limits_.out_of_time(elapsed()))
-      stopped_by_ = "the time limit";
-    else if (checker::resident_over_limit(limits_))
-      stopped_by_ = "the memory limit";
-    return !stopped_by_.empty();
-  };
+  const auto stop = [this] { return should_stop(); };
   const auto report = [this](const std::string& status) { progress_.show(part_ + status); };
   // R(env): every state the environment reaches with its inputs from the nodes free.
   bdd env_reach;
@@ -85,6 +76,16 @@ SymbolicU::SymbolicU(const VlConfig& config, const ArbitraryStarts& starts,
   }
 }
 
+bool SymbolicU::should_stop() {
+  if (checker::interrupted())
+    stopped_by_ = "an interrupt (SIGINT or SIGTERM)";
+  else if (limits_.out_of_time(elapsed()))
+    stopped_by_ = "the time limit";
+  else if (checker::resident_over_limit(limits_))
+    stopped_by_ = "the memory limit";
+  return !stopped_by_.empty();
+}
+
 double SymbolicU::elapsed() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
 }
@@ -107,7 +108,7 @@ bdd SymbolicU::measured_lmc(const VlConfig& config, const tioa::Automaton& layer
 }
 
 SymbolicRun SymbolicU::stabilise(const bdd& start, const bdd& legal, const bdd& settled,
-                                 std::uint64_t witness_after, const std::string& part) {
+                                 std::uint64_t witness_after, const std::string& part, bool apart) {
   part_ = part.empty() ? "" : part + ": ";
   SymbolicRun run;
   run.seconds = elapsed();
@@ -117,8 +118,13 @@ SymbolicRun SymbolicU::stabilise(const bdd& start, const bdd& legal, const bdd& 
     return run;
   }
   system_->set_settled(settled);
-  run.result = sym::stabilise(*system_, start, legal, witness_after);
+  run.result = apart ? sym::stabilise_apart(*system_, start, legal, witness_after,
+                                            [this] { return should_stop(); })
+                     : sym::stabilise(*system_, start, legal, witness_after);
   system_->set_settled(bddfalse);
+  if (run.result.stopped && stopped_by_.empty())
+    stopped_by_ = "the memory limit"; // (the child's: its own stops are its time limit,
+                                      // an interrupt, which the parent sees too, and this)
   run.environment_states = environment_states_;
   run.learned_cubes = figures_.leaves;
   run.seconds = elapsed();

@@ -63,12 +63,17 @@ public:
   // From `start` into `legal`, with `settled` counted in L and not expanded (bddfalse: none);
   // a start state of a worst case is picked when the worst time exceeds `witness_after`.
   // `part` names the part of the start set `start` is, for the progress line ("without
-  // junk: time layer 3: ...").
+  // junk: time layer 3: ..."). `apart`: in a child process (checker/symbolic_apart.hpp),
+  // so that the time limit or an interrupt ends it at once, not after the image being
+  // computed; for a run whose result may be given up (what the child reorders is lost).
   SymbolicRun stabilise(const bdd& start, const bdd& legal, const bdd& settled,
-                        std::uint64_t witness_after, const std::string& part = "");
+                        std::uint64_t witness_after, const std::string& part = "",
+                        bool apart = false);
 
 private:
   double elapsed() const;
+  // Whether to stop (an interrupt, the time limit, the memory limit: stopped_by_ says which).
+  bool should_stop();
 
   std::chrono::steady_clock::time_point began_;
   checker::Limits limits_;

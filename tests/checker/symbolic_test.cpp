@@ -2,9 +2,13 @@
 // reachable states, and the same worst stabilisation time from every start state.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 
 #include "checker/checks.hpp"
+#include "checker/symbolic_apart.hpp"
 #include "checker/symbolic_stabilisation.hpp"
 #include "helpers.hpp"
 #include "models/fischer/fischer.hpp"
@@ -213,6 +217,41 @@ TEST_CASE("symbolic: the worst time from every start state, as check_stabilisati
     sym::System system(space, figures);
     system.set_stop([] { return true; });
     CHECK(sym::stabilise(system, space.valid(), space.valid(), 0).stopped);
+  }
+  SECTION("in a child process: the same result, and a stop ends it at once") {
+    const tioa::Automaton c = timed_countdown(4);
+    const sym::BddSession session(c.layout().bits());
+    const sym::Space space(c);
+    sym::LearningFigures figures;
+    sym::System system(space, figures);
+    sym::LearningFigures predicate;
+    const bdd in_legal = sym::learn_predicate(space, variable_is(c, "x", 0), predicate);
+    const sym::StabilisationResult here = sym::stabilise(system, space.valid(), in_legal, 0);
+    const sym::StabilisationResult apart =
+        sym::stabilise_apart(system, space.valid(), in_legal, 0, [] { return false; });
+    CHECK_FALSE(apart.stopped);
+    CHECK(apart.worst == here.worst);
+    CHECK(apart.worst == 4u);
+    CHECK(apart.start_states == here.start_states);
+    CHECK(apart.reachable == here.reachable);
+    CHECK(apart.layers == here.layers);
+    CHECK(apart.worst_start == here.worst_start);
+    REQUIRE_FALSE(apart.worst_start.empty());
+    // A child that never ends (its stop is never asked: a loop in the child's copy of the
+    // system) is killed when the parent's stop says so.
+    system.set_stop([] {
+      for (;;)
+        ::pause();
+      return false;
+    });
+    const auto began = std::chrono::steady_clock::now();
+    const sym::StabilisationResult killed =
+        sym::stabilise_apart(system, space.valid(), in_legal, 0, [&] {
+          return std::chrono::steady_clock::now() - began > std::chrono::milliseconds(300);
+        });
+    CHECK(killed.stopped);
+    CHECK(killed.start_states == here.start_states);
+    system.set_stop({});
   }
   SECTION("every group of every fixpoint round is reported, with its stage") {
     const tioa::Automaton c = timed_countdown(4);
