@@ -96,8 +96,8 @@ ModelDefinition vlayer_mc_definition() {
           "lemma-7.3/7.4, theorem-7.5: 'sampled' the sample below; 'all' every start state of "
           "U(VLNodes) x R(env) (lemma-7.4: every L1MC state), decided symbolically (binary "
           "decision diagrams; 1x1 in 10-120 s; 1x2 with junk=0 in 1-40 min; 1x2 with junk=2: "
-          "lemma-7.4 in minutes, lemma-7.3 and theorem-7.5 not decided, their first time layer "
-          "runs past 20 min; with junk, lemma-7.3/7.4 first try the start states without junk, "
+          "lemma-7.4 with every repair in 2 min, the rest not decided, their first time layer "
+          "runs past 10 min; with junk, lemma-7.3/7.4 first try the start states without junk, "
           "whose counterexample stands when the whole set is stopped)"),
       {"samples", 1000, 1, 1000000,
        "lemma-7.3/7.4, theorem-7.5: start states drawn from U(VLNodes) x R(env) when there are "
