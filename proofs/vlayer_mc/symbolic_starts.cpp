@@ -20,9 +20,9 @@ namespace {
 // variables the slots are made of, named `VBcast.junk_kind[i]`, `CN_p.delay.junk_value[j]`
 // and so on (models/vlayer_mc/vbcast.cpp, vbdelay.cpp), hold 0, junk::empty for a slot's
 // kind. That is how a slot is left when it empties (and how it starts), so these are
-// exactly the start states of the same instance with `junk=0`: its sets, with constant
-// junk variables, are as small as that instance's (an empty slot with other fields free
-// made the first time layers of 1x2 several times slower).
+// exactly the start states of the same instance with `junk=0`, and with the junk variables
+// constant the sets are that instance's (an empty slot with its other fields free would be
+// the same behaviour with more states).
 bdd junk_slots_empty(const sym::Space& space) {
   static_assert(junk::empty == 0);
   bdd empty = bddtrue;
