@@ -4,8 +4,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstring>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace checker::symbolic {
 

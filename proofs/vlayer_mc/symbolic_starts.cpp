@@ -122,9 +122,10 @@ SymbolicRun SymbolicU::stabilise(const bdd& start, const bdd& legal, const bdd& 
                                             [this] { return should_stop(); })
                      : sym::stabilise(*system_, start, legal, witness_after);
   system_->set_settled(bddfalse);
-  if (run.result.stopped && stopped_by_.empty())
-    stopped_by_ = "the memory limit"; // (the child's: its own stops are its time limit,
-                                      // an interrupt, which the parent sees too, and this)
+  // A child that stopped itself before the parent asked: by the time limit or an interrupt,
+  // which the parent sees too, or else by its own memory.
+  if (run.result.stopped && stopped_by_.empty() && !should_stop())
+    stopped_by_ = "the memory limit";
   run.environment_states = environment_states_;
   run.learned_cubes = figures_.leaves;
   run.seconds = elapsed();
